@@ -1,0 +1,35 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+//
+// Appends the named parameters of the package Surface_mesh_direction_fields to
+// CGAL's list of named parameters.
+//
+// Why a shadow file: CGAL 5.5 builds the member functions of
+// `CGAL::Named_function_parameters` (the chaining `.degree(4).vertex_point_map(vpm)`)
+// from this one list, and members cannot be added from outside. Placing this
+// file before CGAL's include directory and forwarding with `#include_next`
+// gives users exactly the CGAL syntax, in any order. When the package is merged
+// into CGAL, the lines below move verbatim into CGAL's own file and this file
+// is deleted. `#include_next` is a GCC/Clang extension (not MSVC).
+//
+// NOTE: no include guard, on purpose: CGAL includes this file three times with
+// three different definitions of CGAL_add_named_parameter.
+
+#include_next <CGAL/STL_Extension/internal/parameters_interface.h>
+
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_NAMED_PARAMETERS_DECLARED 1
+
+// Surface_mesh_direction_fields
+CGAL_add_named_parameter(degree_t, degree, degree)
+CGAL_add_named_parameter(smoothness_parameter_t, smoothness_parameter, smoothness_parameter)
+CGAL_add_named_parameter(singularities_output_iterator_t, singularities_output_iterator, singularities_output_iterator)
+CGAL_add_named_parameter(vertex_magnitude_map_t, vertex_magnitude_map, vertex_magnitude_map)
+CGAL_add_named_parameter(residual_tolerance_t, residual_tolerance, residual_tolerance)

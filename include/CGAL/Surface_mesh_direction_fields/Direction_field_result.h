@@ -1,0 +1,106 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_DIRECTION_FIELD_RESULT_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_DIRECTION_FIELD_RESULT_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+What the solve found on one connected component of the mesh (components are
+numbered in the order of their smallest vertex index).
+*/
+struct Component_report
+{
+  /// number of vertices of the component
+  std::size_t number_of_vertices = 0;
+  /// number of faces of the component
+  std::size_t number_of_faces = 0;
+  /// Euler characteristic \f$ \chi = V - E + F \f$ of the component
+  int euler_characteristic = 0;
+  /// `true` if the component has no boundary
+  bool is_closed = false;
+  /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$; it scales like
+  /// the inverse of an area (it is `n (1 - s) / R^2` on a round sphere of radius `R`)
+  double eigenvalue = 0.;
+  /// number of inverse iterations performed
+  std::size_t iterations = 0;
+  /// final relative residual \f$ \|A u - \lambda M u\| / (\sigma \|M u\|) \f$, with
+  /// \f$ \sigma = \mathrm{tr}(A) / \mathrm{tr}(M) \f$
+  double residual = 0.;
+  /// `true` if the residual reached the requested tolerance
+  bool converged = false;
+  /// sum of the integer indices `k` of the component's faces; equals `n * euler_characteristic`
+  /// on a closed component (discrete Poincar&eacute;-Hopf)
+  int index_sum = 0;
+  /// number of faces of the component with a non-zero index
+  std::size_t number_of_singular_faces = 0;
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+Wall-clock times of the phases of a computation, in milliseconds.
+*/
+struct Direction_field_timings
+{
+  /// indexing the mesh, tangent spaces, connection, and assembly of the matrices
+  double setup_ms = 0.;
+  /// sparse factorizations (one per component)
+  double factorization_ms = 0.;
+  /// inverse iterations, singularities and output directions
+  double solve_ms = 0.;
+  /// the whole call
+  double total_ms = 0.;
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+The value returned by `compute_globally_optimal_directions()`: one report per
+connected component, and totals over all of them.
+*/
+struct Direction_field_result
+{
+  /// the degree `n` of the field
+  int degree = 1;
+  /// the energy parameter `s`
+  double smoothness_parameter = 0.;
+  /// one entry per connected component
+  std::vector<Component_report> components;
+  /// number of vertices without incident face (they receive the zero vector)
+  std::size_t number_of_isolated_vertices = 0;
+  /// sum of the integer indices `k` over all faces
+  int index_sum = 0;
+  /// number of faces with a non-zero index
+  std::size_t number_of_singular_faces = 0;
+  /// largest number of inverse iterations over the components
+  std::size_t iterations = 0;
+  /// largest final residual over the components
+  double residual = 0.;
+  /// `true` if every component converged
+  bool converged = true;
+  /// wall-clock times
+  Direction_field_timings timings;
+};
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_DIRECTION_FIELD_RESULT_H

@@ -1,0 +1,69 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_EXCEPTIONS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_EXCEPTIONS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+Base class of the exceptions thrown by the functions of this package.
+`what()` names the problem and, where there is one, the offending element
+(vertex or face index in the order of the mesh's index maps).
+*/
+class Direction_field_error : public std::runtime_error
+{
+public:
+  /// constructs the exception with the message `what`.
+  explicit Direction_field_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+Thrown when the input mesh or a parameter does not meet the documented
+requirements: an empty mesh, a non-triangle face, a non-manifold vertex, a
+degenerate (zero-area) face, a non-finite coordinate, a degree `n < 1`, or a
+smoothness parameter `s` outside `[-1, 1]`. The input is left untouched.
+*/
+class Invalid_input_error : public Direction_field_error
+{
+public:
+  /// constructs the exception with the message `what`.
+  explicit Invalid_input_error(const std::string& what) : Direction_field_error(what) {}
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+Thrown when the sparse linear solver fails to factor the shifted energy
+matrix, which only happens with a solver that does not support Hermitian
+positive definite matrices, or on input that is numerically degenerate.
+*/
+class Solver_failure_error : public Direction_field_error
+{
+public:
+  /// constructs the exception with the message `what`.
+  explicit Solver_failure_error(const std::string& what) : Direction_field_error(what) {}
+};
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_EXCEPTIONS_H

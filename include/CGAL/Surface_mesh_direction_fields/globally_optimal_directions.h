@@ -1,0 +1,382 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTIONS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTIONS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Named_function_parameters.h>
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_NAMED_PARAMETERS_DECLARED
+#  error "The include directory of Surface_mesh_direction_fields must come before CGAL's include directory (see the README)."
+#endif
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/iterator.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+The default model of `SparseLinearAlgebraWithFactorTraits_d` used by
+`compute_globally_optimal_directions()`: Eigen's simplicial \f$ LDL^\top \f$
+factorization of complex Hermitian matrices.
+*/
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double> > > >
+  Default_direction_field_solver;
+
+namespace internal {
+
+template <typename GeomTraits>
+struct Point_to_array
+{
+  GeomTraits gt;
+  template <typename Point>
+  Vec3 operator()(const Point& p) const
+  {
+    return Vec3{CGAL::to_double(gt.compute_x_3_object()(p)),
+                CGAL::to_double(gt.compute_y_3_object()(p)),
+                CGAL::to_double(gt.compute_z_3_object()(p))};
+  }
+};
+
+inline void check_field_parameters(int degree, double s)
+{
+  if(degree < 1)
+    throw Invalid_input_error("the degree n must be at least 1 (got " + std::to_string(degree) + ")");
+  if(!(s >= -1. && s <= 1.))
+    throw Invalid_input_error("the smoothness parameter s must lie in [-1, 1] (got " + std::to_string(s) + ")");
+}
+
+// Euler characteristic of a component: V - E + F with E = (3F + B) / 2, where B
+// counts the boundary edges, equal to the number of boundary vertices on a
+// manifold mesh (each boundary loop has as many vertices as edges).
+inline void describe_component(const Indexed_mesh& m, const Component& comp, Component_report& report)
+{
+  std::size_t border_vertices = 0;
+  for(std::size_t v : comp.vertices)
+    border_vertices += m.is_border_vertex[v];
+  const long V = static_cast<long>(comp.vertices.size());
+  const long F = static_cast<long>(comp.faces.size());
+  const long E = (3 * F + static_cast<long>(border_vertices)) / 2;
+  report.number_of_vertices = comp.vertices.size();
+  report.number_of_faces = comp.faces.size();
+  report.euler_characteristic = static_cast<int>(V - E + F);
+  report.is_closed = (border_vertices == 0);
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+\brief computes the globally smoothest unit `n`-direction field of a triangle
+mesh (Kn&ouml;ppel, Crane, Pinkall and Schr&ouml;der, 2013), and its singularities.
+
+The field is represented at each vertex by the `n`-th power `u` of a complex
+number, so that the `n` directions of an `n`-direction field become one value.
+The smoothest field minimizes the energy \f$ E_s(u) = u^* A u \f$ over all
+`u` with \f$ u^* M u = 1 \f$, that is, it is the eigenvector of the smallest
+eigenvalue of \f$ A u = \lambda M u \f$, where `A` is the finite-element
+matrix of the energy \f$ E_s \f$ (\f$ s = 0 \f$: Dirichlet energy of the
+covariant derivative; \f$ s = 1 \f$: holomorphic; \f$ s = -1 \f$:
+anti-holomorphic) and `M` is the mass matrix, both built with the Levi-Civita
+connection of the mesh. See the \ref Chapter_SurfaceMeshDirectionFields "user manual".
+
+Each connected component is solved on its own (its own eigenproblem).
+A vertex without incident face receives the zero vector.
+
+At each vertex `v`, `vertex_direction_map` receives one unit vector `d`,
+orthogonal to the vertex normal; the field's other `n - 1` directions at `v`
+are the rotations of `d` by \f$ 2\pi k / n \f$, `k = 1, ..., n-1`, about the
+vertex normal.
+
+A face `f` is singular when the field turns by a non-zero multiple of
+\f$ 2\pi / n \f$ around it: its index is `k / n` for a non-zero integer `k`.
+On a closed component the integers `k` add up to `n` times its Euler
+characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam VertexDirectionMap a model of `WritablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+        `GT::Vector_3` as value type
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param tmesh the input triangle mesh; it is not modified
+\param vertex_direction_map the property map receiving a unit tangent direction per vertex
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
+       listed below; `GT` stands for the type of the object given to `geom_traits()`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{degree}
+    \cgalParamDescription{the degree `n` of the field: 1 for a vector (direction) field,
+                          2 for a line field, 4 for a cross field; any `n >= 1`}
+    \cgalParamType{`int`}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{smoothness_parameter}
+    \cgalParamDescription{the energy parameter `s` in \f$ [-1, 1] \f$: `-1` anti-holomorphic,
+                          `0` Dirichlet, `1` holomorphic energy; larger `s` gives fewer singularities}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{singularities_output_iterator}
+    \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
+                          face and its integer index `k` (the field's index there is `k / n`)}
+    \cgalParamType{a model of `OutputIterator` accepting
+                   `std::pair<boost::graph_traits<TriangleMesh>::%face_descriptor, int>`}
+    \cgalParamDefault{no output}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_magnitude_map}
+    \cgalParamDescription{a property map receiving at each vertex the magnitude \f$ |u_i| \f$ of the
+                          smoothest section, normalized so that its area-weighted mean square is 1 on each
+                          component; small values mark where the field is least defined (near singularities)}
+    \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `double` (or `GT::FT`) as value type}
+    \cgalParamDefault{no output}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `GT::Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
+    \cgalParamExtra{If this parameter is omitted, an internal property map for `CGAL::vertex_point_t`
+                    must be available in `TriangleMesh`.}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_normal_map}
+    \cgalParamDescription{a property map giving the vertex normals that define the tangent planes of the
+                          output directions}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `GT::Vector_3` as value type}
+    \cgalParamDefault{the angle-weighted mean of the incident face normals}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+    \cgalParamExtra{Only `FT`, `Point_3`, `Vector_3`, `Compute_x_3`, `Compute_y_3`, `Compute_z_3` and
+                    `Construct_vector_3` are used.}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `tmesh` a unique index between `0` and
+                          `num_vertices(tmesh) - 1`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tmesh` a unique index between `0` and
+                          `num_faces(tmesh) - 1`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+                   as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the maximum number of inverse power iterations per component}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`1000`}
+  \cgalParamNEnd
+  \cgalParamNBegin{residual_tolerance}
+    \cgalParamDescription{the iteration stops when \f$ \|A u - \lambda M u\| \le \tau\, \sigma \|M u\| \f$,
+                          with \f$ \sigma = \mathrm{tr}(A) / \mathrm{tr}(M) \f$ (a scale-invariant test)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1e-10`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the start vector of the iteration; a seed gives the same field on
+                          every run and platform}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sparse_linear_solver}
+    \cgalParamDescription{the solver that factors the shifted energy matrix \f$ A + \epsilon M \f$ once per
+                          component and solves with it at each iteration}
+    \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT`,
+                   able to factor Hermitian positive definite matrices (both triangles are given)}
+    \cgalParamDefault{`CGAL::Surface_mesh_direction_fields::Default_direction_field_solver`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a `Direction_field_result`: per component, the smallest eigenvalue, the iterations used,
+the final residual, the Euler characteristic and the index sum; and the timings.
+
+\throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex, a
+        zero-area face or a non-finite coordinate, if `n < 1`, or if `s` is outside \f$ [-1, 1] \f$.
+        Nothing is written to the output maps then.
+\throws Solver_failure_error if the sparse solver fails to factor the shifted energy matrix.
+
+\pre `CGAL::is_triangle_mesh(tmesh)` (checked, see above)
+
+\warning All linear algebra is done in `double`, also with an exact kernel: coordinates are
+         converted once, and the output vectors are built from doubles.
+*/
+template <typename TriangleMesh, typename VertexDirectionMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Direction_field_result
+compute_globally_optimal_directions(const TriangleMesh& tmesh,
+                                    VertexDirectionMap vertex_direction_map,
+                                    const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  typedef std::chrono::steady_clock Clock;
+  typedef std::complex<double> Complex;
+
+  typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
+  typedef typename GetVertexPointMap<TriangleMesh, CGAL_NP_CLASS>::const_type Vertex_point_map;
+  typedef typename GetSolver<CGAL_NP_CLASS, Default_direction_field_solver>::type Sparse_solver;
+  typedef typename Geom_traits::FT FT;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+
+  const auto start = Clock::now();
+  Direction_field_result result;
+  result.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
+  result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
+  internal::check_field_parameters(result.degree, result.smoothness_parameter);
+
+  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tmesh));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
+  Sparse_solver solver = choose_parameter<Sparse_solver>(get_parameter(np, internal_np::sparse_linear_solver));
+
+  internal::Eigen_solve_options options;
+  options.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
+  options.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
+  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  if(!(options.residual_tolerance >= 0.))
+    throw Invalid_input_error("the residual tolerance must be non-negative");
+
+  // --- setup: mesh plumbing, tangent spaces, connection, matrices
+  const internal::Point_to_array<Geom_traits> to_array{gt};
+  const internal::Indexed_mesh mesh = internal::make_indexed_mesh(
+    tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
+  const internal::Tangent_spaces ts = internal::compute_tangent_spaces(mesh);
+  const internal::Connection connection = internal::compute_connection(mesh, ts, result.degree);
+  const internal::Components components = internal::split_into_components(mesh);
+
+  std::vector<internal::Energy_and_mass> matrices;
+  matrices.reserve(components.list.size());
+  for(const internal::Component& comp : components.list)
+    matrices.push_back(internal::assemble_energy_and_mass(mesh, ts, connection, comp, components.local_index,
+                                                          result.smoothness_parameter));
+  const auto setup_end = Clock::now();
+  result.timings.setup_ms = std::chrono::duration<double, std::milli>(setup_end - start).count();
+
+  // --- one eigenproblem per component
+  std::vector<Complex> u(mesh.number_of_vertices(), Complex(0., 0.));
+  std::vector<double> magnitude(mesh.number_of_vertices(), 0.);
+  result.components.resize(components.list.size());
+  for(std::size_t c = 0; c < components.list.size(); ++c)
+  {
+    const internal::Component& comp = components.list[c];
+    const internal::Eigen_solve_result eig =
+      internal::smallest_eigenpair(matrices[c].energy, matrices[c].mass, solver, options);
+    Component_report& report = result.components[c];
+    internal::describe_component(mesh, comp, report);
+    report.eigenvalue = eig.eigenvalue;
+    report.iterations = eig.iterations;
+    report.residual = eig.residual;
+    report.converged = eig.converged;
+    result.timings.factorization_ms += eig.factorization_ms;
+
+    double area = 0.;
+    for(std::size_t f : comp.faces) area += ts.face_area[f];
+    for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+    {
+      u[comp.vertices[i]] = eig.vector[static_cast<Eigen::Index>(i)];
+      magnitude[comp.vertices[i]] = std::abs(eig.vector[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
+    }
+    result.iterations = (std::max)(result.iterations, eig.iterations);
+    result.residual = (std::max)(result.residual, eig.residual);
+    result.converged = result.converged && eig.converged;
+  }
+
+  // --- singularities
+  const std::vector<int> index = internal::face_indices(mesh, connection, u);
+  std::vector<face_descriptor> face_of_index(mesh.number_of_faces());
+  for(face_descriptor f : faces(tmesh))
+    face_of_index[static_cast<std::size_t>(get(fim, f))] = f;
+  auto singularities_out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
+                                            CGAL::Emptyset_iterator());
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    Component_report& report = result.components[mesh.component_of_face[f]];
+    report.index_sum += index[f];
+    result.index_sum += index[f];
+    if(index[f] != 0)
+    {
+      ++report.number_of_singular_faces;
+      ++result.number_of_singular_faces;
+      *singularities_out++ = std::make_pair(face_of_index[f], index[f]);
+    }
+  }
+
+  // --- directions in 3D
+  std::vector<internal::Vec3> normals;
+  if constexpr(is_default_parameter<CGAL_NP_CLASS, internal_np::vertex_normal_map_t>::value)
+    normals = internal::angle_weighted_vertex_normals(mesh, ts);
+  else
+  {
+    const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
+    normals.resize(mesh.number_of_vertices());
+    for(vertex_descriptor v : vertices(tmesh))
+      normals[static_cast<std::size_t>(get(vim, v))] = internal::normalized(to_array(get(vnm, v)));
+  }
+  auto construct_vector = gt.construct_vector_3_object();
+  for(vertex_descriptor v : vertices(tmesh))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    const internal::Vec3 d = internal::tangent_direction(mesh, ts, i, u[i], result.degree, normals[i]);
+    put(vertex_direction_map, v, construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+    if(mesh.fan_size(i) == 0)
+      ++result.number_of_isolated_vertices;
+  }
+  if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::vertex_magnitude_map_t>::value)
+  {
+    auto vmm = get_parameter(np, internal_np::vertex_magnitude_map);
+    for(vertex_descriptor v : vertices(tmesh))
+      put(vmm, v, magnitude[static_cast<std::size_t>(get(vim, v))]);
+  }
+
+  const auto end = Clock::now();
+  result.timings.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
+  result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
+  return result;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTIONS_H

@@ -1,0 +1,180 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ASSEMBLY_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ASSEMBLY_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <Eigen/Sparse>
+
+#include <complex>
+#include <vector>
+
+// Global energy and mass matrices from the local 3x3 matrices of each face
+// (method.md, section 4).
+//
+// Placement and conjugation. The energy of a coefficient vector u is u^* A u
+// (conjugate on the left), so the (row a, column b) entry of the local matrix
+// of face t = (i, j, k) is the integral over t of <psi_a, psi_b>, antilinear in
+// psi_a, where psi_a = b_a phi_a and phi_a is X_a transported along the rays
+// from vertex a. Parallel transport around the sub-triangle (k, v, j) gives
+// conj(phi_k(v)) phi_j(v) = r_jk exp(-i Omega b_i(v)), hence
+//     (row k, column j) = r_jk |t| conj(mass_factor(Omega)),
+// and likewise for the Dirichlet part, with conj(f1), conj(f2); the
+// (row j, column k) entry is the conjugate. This is method.md's M_jk, D_jk
+// with r_jk -> conj(r_jk) = r_kj, i.e. the printed formulas hold in the
+// (row j, column k) position with the transport r_kj. With the formulas taken
+// literally (r_jk together with exp(+i Omega)), the local matrices are no
+// longer Gram matrices: they become indefinite once |Omega| is not small (the
+// test compares them with a direct quadrature of the sections).
+// The boundary term of E_s follows the same conjugation: +i r_jk / 2 inside
+// s (...) at (row k, column j), for the counter-clockwise edge j -> k of t.
+// In the flat case D_jk -> -r_jk cot(alpha_i) / 2 and the pair contributes
+// (cot(alpha_i) / 2) |u_k - r_jk u_j|^2: a field that agrees with its
+// transport costs nothing.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+typedef std::complex<double> Complex;
+typedef Eigen::SparseMatrix<Complex> Complex_sparse_matrix;
+typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Complex_vector;
+
+// The vertices and faces of one connected component.
+struct Component
+{
+  std::vector<std::size_t> vertices;  // global index of each local vertex
+  std::vector<std::size_t> faces;     // global face indices
+};
+
+// All components, and the index of each vertex within its component
+// (`no_index` for isolated vertices).
+struct Components
+{
+  std::vector<Component> list;
+  std::vector<std::size_t> local_index;
+};
+
+inline Components split_into_components(const Indexed_mesh& m)
+{
+  Components comps;
+  comps.list.resize(m.number_of_components);
+  comps.local_index.assign(m.number_of_vertices(), no_index);
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    const std::size_t c = m.component_of_vertex[v];
+    if(c == no_index) continue;
+    comps.local_index[v] = comps.list[c].vertices.size();
+    comps.list[c].vertices.push_back(v);
+  }
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    comps.list[m.component_of_face[f]].faces.push_back(f);
+  return comps;
+}
+
+struct Local_matrices
+{
+  // Entries for the pair of vertices opposite corner c: (row k, column j) with
+  // j = faces[f][c+1], k = faces[f][c+2]; and the diagonal entry of corner c.
+  Complex energy_pair[3], mass_pair[3];
+  double energy_diagonal[3], mass_diagonal[3];
+};
+
+// The local matrices of face f for the energy E_s (s in [-1, 1]).
+inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                     const Connection& con, std::size_t f, double s)
+{
+  Local_matrices lm;
+  const auto& t = m.faces[f];
+  const double area = ts.face_area[f];
+  const double omega = con.holonomy[f];
+  // conjugated kernels: see the note on placement and conjugation above
+  const Complex f1 = std::conj(dirichlet_kernel_f1(omega));
+  const Complex f2 = std::conj(dirichlet_kernel_f2(omega));
+  const Complex mass_kernel = std::conj(mass_factor(omega));
+  const Complex I(0., 1.);
+  for(int c = 0; c < 3; ++c)
+  {
+    const Vec3& pi = m.points[t[c]];
+    const Vec3 p_ij = m.points[t[(c + 1) % 3]] - pi;
+    const Vec3 p_ik = m.points[t[(c + 2) % 3]] - pi;
+    const Vec3 p_jk = p_ik - p_ij;
+    const double g11 = squared_norm(p_ij), g22 = squared_norm(p_ik), g12 = dot(p_ij, p_ik);
+    const Complex r_jk = con.transport[3 * f + (c + 1) % 3];  // j -> k runs counter-clockwise
+
+    const Complex dirichlet = (r_jk / area) * ((g11 + g22) * f1 + g12 * f2);
+    const Complex mass = r_jk * area * mass_kernel;
+    lm.mass_pair[c] = mass;
+    // j -> k is counter-clockwise in t. The boundary term cancels between the
+    // two faces of an interior edge.
+    lm.energy_pair[c] = dirichlet - s * ((omega / area) * mass + 0.5 * I * r_jk);
+
+    const double dirichlet_diagonal =
+      (squared_norm(p_jk) + omega * omega * (g11 + g12 + g22) / 90.) / (4. * area);
+    lm.mass_diagonal[c] = area / 6.;
+    lm.energy_diagonal[c] = dirichlet_diagonal - s * omega / 6.;  // (Omega/|t|) * |t|/6
+  }
+  return lm;
+}
+
+struct Energy_and_mass
+{
+  Complex_sparse_matrix energy;  // A, Hermitian positive semi-definite
+  Complex_sparse_matrix mass;    // M, Hermitian positive definite
+};
+
+// Assembles A and M (both triangles stored) of one component.
+inline Energy_and_mass assemble_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                                const Connection& con, const Component& comp,
+                                                const std::vector<std::size_t>& local_index, double s)
+{
+  typedef Eigen::Triplet<Complex> Triplet;
+  std::vector<Triplet> a, b;
+  a.reserve(9 * comp.faces.size());
+  b.reserve(9 * comp.faces.size());
+  for(std::size_t f : comp.faces)
+  {
+    const Local_matrices lm = local_matrices(m, ts, con, f, s);
+    const auto& t = m.faces[f];
+    for(int c = 0; c < 3; ++c)
+    {
+      const auto i = static_cast<Eigen::Index>(local_index[t[c]]);
+      const auto j = static_cast<Eigen::Index>(local_index[t[(c + 1) % 3]]);
+      const auto k = static_cast<Eigen::Index>(local_index[t[(c + 2) % 3]]);
+      a.emplace_back(i, i, Complex(lm.energy_diagonal[c], 0.));
+      a.emplace_back(k, j, lm.energy_pair[c]);
+      a.emplace_back(j, k, std::conj(lm.energy_pair[c]));
+      b.emplace_back(i, i, Complex(lm.mass_diagonal[c], 0.));
+      b.emplace_back(k, j, lm.mass_pair[c]);
+      b.emplace_back(j, k, std::conj(lm.mass_pair[c]));
+    }
+  }
+  const auto n = static_cast<Eigen::Index>(comp.vertices.size());
+  Energy_and_mass em;
+  em.energy.resize(n, n);
+  em.mass.resize(n, n);
+  em.energy.setFromTriplets(a.begin(), a.end());
+  em.mass.setFromTriplets(b.begin(), b.end());
+  return em;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ASSEMBLY_H

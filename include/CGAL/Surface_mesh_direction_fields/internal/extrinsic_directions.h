@@ -1,0 +1,131 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+// Back to 3D (method.md, section 8): the coefficient u_i (n-th power, rescaled
+// angles from X_i) becomes a unit vector orthogonal to the vertex normal.
+//
+// 1. phi = arg(u_i) / n is a rescaled angle from X_i in [0, 2 pi).
+// 2. The fan of corners covers the rescaled angles [0, s_i * angle sum); the
+//    corner containing phi is found and the vector is laid out in that face's
+//    plane, at the Euclidean angle (phi - theta_corner) / s_i from the corner's
+//    first side. At a boundary vertex whose corners do not reach phi, the
+//    vector is laid out in the plane of the nearest end face, beyond its edge.
+// 3. The in-face vector is projected onto the plane orthogonal to the vertex
+//    normal and normalized.
+// Vertex normals are the angle-weighted means of the face normals unless the
+// user gives them.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+inline std::vector<Vec3> angle_weighted_vertex_normals(const Indexed_mesh& m, const Tangent_spaces& ts)
+{
+  std::vector<Vec3> normals(m.number_of_vertices(), Vec3{0., 0., 0.});
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    const auto& t = m.faces[f];
+    Vec3 nf = cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]);
+    nf = (1. / norm(nf)) * nf;  // faces have positive area (checked)
+    for(int c = 0; c < 3; ++c)
+      normals[t[c]] = normals[t[c]] + ts.corner_angle[3 * f + c] * nf;
+  }
+  for(Vec3& nv : normals)
+  {
+    const double l = norm(nv);
+    if(l > 0.) nv = (1. / l) * nv;
+  }
+  return normals;
+}
+
+// Unit vector in the plane of corner `corner`, at Euclidean angle `psi` from
+// its first side, turning towards its second side.
+inline Vec3 vector_in_corner(const Indexed_mesh& m, std::size_t corner, double psi)
+{
+  const auto& t = m.faces[corner / 3];
+  const int c = static_cast<int>(corner % 3);
+  const Vec3& p = m.points[t[c]];
+  const Vec3 e1 = m.points[t[(c + 1) % 3]] - p;
+  const Vec3 e2 = m.points[t[(c + 2) % 3]] - p;
+  const Vec3 x = (1. / norm(e1)) * e1;
+  Vec3 y = e2 - dot(e2, x) * x;
+  y = (1. / norm(y)) * y;
+  return std::cos(psi) * x + std::sin(psi) * y;
+}
+
+inline Vec3 tangent_direction(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
+                              std::complex<double> u, int degree, const Vec3& normal)
+{
+  const double two_pi = 2. * CGAL_PI;
+  const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
+  if(begin == end)
+    return Vec3{0., 0., 0.};  // isolated vertex
+  double phi = std::arg(u) / degree;
+  if(phi < 0.) phi += two_pi;
+  const double s = ts.angle_scale[v];
+
+  Vec3 w{0., 0., 0.};
+  bool placed = false;
+  for(std::size_t k = begin; k < end && !placed; ++k)
+  {
+    const std::size_t corner = m.fan_corners[k];
+    const double theta0 = ts.corner_theta[corner];
+    const double width = s * ts.corner_angle[corner];
+    if(phi < theta0 + width || k + 1 == end)
+    {
+      if(phi >= theta0 + width && m.is_border_vertex[v])
+      {
+        // Beyond the last corner of a boundary fan: use the nearer end face.
+        const double past_end = phi - (theta0 + width);
+        const double before_start = two_pi - phi;
+        if(before_start < past_end)
+          w = vector_in_corner(m, m.fan_corners[begin], -before_start);
+        else
+          w = vector_in_corner(m, corner, ts.corner_angle[corner] + past_end);
+      }
+      else
+        w = vector_in_corner(m, corner, (phi - theta0) / s);
+      placed = true;
+    }
+  }
+
+  Vec3 projected = w - dot(w, normal) * normal;
+  double l = norm(projected);
+  if(!(l > 1e-8))
+  {
+    // The in-face vector is (nearly) parallel to the normal: fall back to the
+    // projected reference direction, which is never parallel to it in practice.
+    const std::size_t corner = m.fan_corners[begin];
+    const Vec3 e = m.points[m.faces[corner / 3][(corner % 3 + 1) % 3]] - m.points[v];
+    projected = e - dot(e, normal) * normal;
+    l = norm(projected);
+  }
+  return (1. / l) * projected;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H

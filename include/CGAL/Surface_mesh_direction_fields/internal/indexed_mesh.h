@@ -1,0 +1,215 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <string>
+#include <vector>
+
+// The mesh plumbing: the only place that talks to the BGL. Everything
+// downstream (tangent spaces, assembly, solve, outputs) works on the flat
+// arrays of `Indexed_mesh`, so the math never depends on the mesh class.
+//
+// Conventions, fixed here once:
+//  * vertex `v` has index `get(vim, v)` in [0, |V|), face `f` has index in [0, |F|);
+//  * `faces[f] = {a, b, c}` lists the face's vertices in the order of its
+//    halfedge cycle, which is counter-clockwise for the mesh's orientation;
+//  * a corner is the pair (face f, position c in 0..2), numbered `3 f + c`;
+//    its vertex is `faces[f][c]`, and the halfedge leaving that vertex along the
+//    face, `faces[f][c] -> faces[f][(c+1)%3]`, is the corner's first side
+//    (sweeping counter-clockwise through the corner leads from it to the
+//    halfedge `faces[f][c] -> faces[f][(c+2)%3]`);
+//  * the fan of vertex v lists its corners counter-clockwise; the first side of
+//    the first corner is v's reference direction X_v. For a boundary vertex the
+//    fan starts at the boundary edge that has the interior on its left, so the
+//    corners sweep the interior.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+constexpr std::size_t no_index = static_cast<std::size_t>(-1);
+
+struct Indexed_mesh
+{
+  std::vector<std::array<double, 3> > points;        // per vertex
+  std::vector<std::array<std::size_t, 3> > faces;    // counter-clockwise
+  std::vector<std::size_t> fan_offsets;              // |V| + 1 entries
+  std::vector<std::size_t> fan_corners;              // corners 3 f + c, counter-clockwise
+  std::vector<unsigned char> is_border_vertex;       // per vertex
+
+  // Connected components (through shared vertices). Isolated vertices belong
+  // to no component (`no_index`).
+  std::size_t number_of_components = 0;
+  std::vector<std::size_t> component_of_vertex;
+  std::vector<std::size_t> component_of_face;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_faces() const { return faces.size(); }
+  std::size_t fan_size(std::size_t v) const { return fan_offsets[v + 1] - fan_offsets[v]; }
+
+  static std::size_t face_of_corner(std::size_t corner) { return corner / 3; }
+  static std::size_t next_corner(std::size_t corner) { return 3 * (corner / 3) + (corner + 1) % 3; }
+  static std::size_t previous_corner(std::size_t corner) { return 3 * (corner / 3) + (corner + 2) % 3; }
+  std::size_t vertex_of_corner(std::size_t corner) const { return faces[corner / 3][corner % 3]; }
+};
+
+// Union-find over the vertices of each face.
+inline void label_connected_components(Indexed_mesh& m)
+{
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<std::size_t> parent(nv);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t x) {
+    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
+    return x;
+  };
+  for(const auto& f : m.faces)
+    for(int c = 1; c < 3; ++c)
+    {
+      std::size_t a = find(f[0]), b = find(f[c]);
+      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  // Number components in order of their smallest vertex index (deterministic).
+  std::vector<std::size_t> label(nv, no_index);
+  m.component_of_vertex.assign(nv, no_index);
+  m.number_of_components = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(m.fan_size(v) == 0)
+      continue;  // isolated vertex
+    std::size_t root = find(v);
+    if(label[root] == no_index)
+      label[root] = m.number_of_components++;
+    m.component_of_vertex[v] = label[root];
+  }
+  m.component_of_face.resize(m.number_of_faces());
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    m.component_of_face[f] = m.component_of_vertex[m.faces[f][0]];
+}
+
+// Builds the flat representation. `point_of(v)` returns the coordinates of a
+// vertex as std::array<double,3>. Throws Invalid_input_error on an empty mesh,
+// a non-triangle face, a non-finite coordinate or a non-manifold vertex.
+template <typename TriangleMesh, typename PointOf, typename VertexIndexMap, typename FaceIndexMap>
+Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
+                               VertexIndexMap vim, FaceIndexMap fim)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  Indexed_mesh m;
+  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  if(nv == 0 || nf == 0)
+    throw Invalid_input_error("empty mesh: the mesh has no " + std::string(nv == 0 ? "vertex" : "face"));
+
+  m.points.resize(nv);
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    m.points[i] = point_of(v);
+    for(double x : m.points[i])
+      if(!std::isfinite(x))
+        throw Invalid_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  }
+
+  m.faces.resize(nf);
+  std::vector<std::size_t> incident_faces(nv, 0);
+  for(auto f : faces(tm))
+  {
+    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    halfedge_descriptor h = halfedge(f, tm);
+    if(next(next(next(h, tm), tm), tm) != h)
+      throw Invalid_input_error("face " + std::to_string(fi) + " is not a triangle");
+    for(int c = 0; c < 3; ++c, h = next(h, tm))
+    {
+      m.faces[fi][c] = static_cast<std::size_t>(get(vim, source(h, tm)));
+      ++incident_faces[m.faces[fi][c]];
+    }
+  }
+
+  // Position of halfedge h (a halfedge of face f) in f's cycle.
+  auto corner_of = [&](halfedge_descriptor h) {
+    const auto f = face(h, tm);
+    halfedge_descriptor g = halfedge(f, tm);
+    int c = 0;
+    while(g != h) { g = next(g, tm); ++c; }
+    return 3 * static_cast<std::size_t>(get(fim, f)) + static_cast<std::size_t>(c);
+  };
+
+  m.fan_offsets.assign(nv + 1, 0);
+  m.is_border_vertex.assign(nv, 0);
+  m.fan_corners.reserve(3 * nf);
+  // Vertices in index order, so that fans are laid out by index.
+  std::vector<typename GT::vertex_descriptor> vertex_of_index(nv);
+  for(auto v : vertices(tm))
+    vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
+
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    m.fan_offsets[i] = m.fan_corners.size();
+    const auto v = vertex_of_index[i];
+    const halfedge_descriptor hv = halfedge(v, tm);
+    if(hv == GT::null_halfedge() || incident_faces[i] == 0)
+      continue;  // isolated vertex: empty fan
+
+    // Outgoing halfedges of v are the opposites of the halfedges around target v.
+    halfedge_descriptor start = opposite(hv, tm);
+    for(halfedge_descriptor h : halfedges_around_target(hv, tm))
+    {
+      const halfedge_descriptor out = opposite(h, tm);
+      if(!is_border(out, tm) && is_border(h, tm))
+      {
+        start = out;  // the interior lies on the left of `out`, the border on its right
+        m.is_border_vertex[i] = 1;
+        break;
+      }
+    }
+    if(is_border(start, tm))  // only possible if every halfedge around v is a border one
+      throw Invalid_input_error("vertex " + std::to_string(i) + " is non-manifold");
+
+    halfedge_descriptor h = start;
+    do
+    {
+      m.fan_corners.push_back(corner_of(h));
+      h = opposite(prev(h, tm), tm);
+    }
+    while(h != start && !is_border(h, tm) && m.fan_corners.size() - m.fan_offsets[i] <= incident_faces[i]);
+
+    if(m.fan_corners.size() - m.fan_offsets[i] != incident_faces[i])
+      throw Invalid_input_error("vertex " + std::to_string(i) +
+                                " is non-manifold (its incident faces do not form a single fan)");
+  }
+  m.fan_offsets[nv] = m.fan_corners.size();
+
+  label_connected_components(m);
+  return m;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H

@@ -1,0 +1,61 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+// Discrete Poincare-Hopf index of a vertex field per face (method.md, section 7).
+// For the halfedge i -> j, omega_ij in (-pi, pi] is the rotation from the
+// transported coefficient r_ij u_i to u_j; around face t the rotations and the
+// curvature Omega_t add up to 2 pi index_t. Because Omega_t = n kappa_t is
+// unwrapped, the indices of a closed component sum to n chi exactly.
+// A zero coefficient has no direction; it is taken as angle 0 (documented).
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+inline int face_index(const Indexed_mesh& m, const Connection& con,
+                      const std::vector<std::complex<double> >& u, std::size_t f)
+{
+  double total = con.holonomy[f];
+  for(int c = 0; c < 3; ++c)
+  {
+    const std::complex<double>& ui = u[m.faces[f][c]];
+    const std::complex<double>& uj = u[m.faces[f][(c + 1) % 3]];
+    total += std::arg(uj * std::conj(con.transport[3 * f + c] * ui));
+  }
+  return static_cast<int>(std::lround(total / (2. * CGAL_PI)));
+}
+
+inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& con,
+                                     const std::vector<std::complex<double> >& u)
+{
+  std::vector<int> index(m.number_of_faces());
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    index[f] = face_index(m, con, u, f);
+  return index;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H

@@ -1,0 +1,151 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TANGENT_SPACES_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TANGENT_SPACES_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+// Intrinsic geometry of the mesh (method.md, sections 1 to 3):
+//   tangent spaces  angle sums, rescaling factors s_i, rescaled halfedge angles theta;
+//   connection      transport r_ij = exp(i rho_ij) for degree n, curvature Omega_t = n kappa_t.
+// The tangent spaces do not depend on n; the connection does.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+struct Tangent_spaces
+{
+  std::vector<double> angle_scale;        // s_i = 2 pi / (angle sum) inside, 1 on the boundary
+  std::vector<double> corner_angle;       // Euclidean angle alpha of corner 3f+c
+  std::vector<double> corner_theta;       // theta_i(i -> j) of the corner's first side, i = faces[f][c], j = faces[f][c+1]
+  std::vector<double> face_area;          // |t|
+  std::vector<double> face_angle_defect;  // kappa_t = sum of the rescaled corner angles - pi
+};
+
+// Euclidean corner angles and areas; a face of zero area (or so thin that one
+// of its angles is not a number) is rejected: its matrices are undefined.
+inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_spaces& ts)
+{
+  const std::size_t nf = m.number_of_faces();
+  ts.corner_angle.resize(3 * nf);
+  ts.face_area.resize(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = m.faces[f];
+    for(int c = 0; c < 3; ++c)
+    {
+      const Vec3& p = m.points[t[c]];
+      const Vec3 e1 = m.points[t[(c + 1) % 3]] - p;
+      const Vec3 e2 = m.points[t[(c + 2) % 3]] - p;
+      ts.corner_angle[3 * f + c] = std::atan2(norm(cross(e1, e2)), dot(e1, e2));
+    }
+    const Vec3& p0 = m.points[t[0]];
+    const double area = 0.5 * norm(cross(m.points[t[1]] - p0, m.points[t[2]] - p0));
+    ts.face_area[f] = area;
+    if(!(area > 0.) || !std::isfinite(area))
+      throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
+  }
+}
+
+inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m)
+{
+  const double two_pi = 2. * CGAL_PI;
+  Tangent_spaces ts;
+  compute_corner_angles_and_areas(m, ts);
+
+  const std::size_t nv = m.number_of_vertices();
+  ts.angle_scale.assign(nv, 1.);
+  ts.corner_theta.assign(3 * m.number_of_faces(), 0.);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
+    if(begin == end)
+      continue;
+    if(!m.is_border_vertex[v])
+    {
+      double angle_sum = 0.;
+      for(std::size_t k = begin; k < end; ++k)
+        angle_sum += ts.corner_angle[m.fan_corners[k]];
+      ts.angle_scale[v] = two_pi / angle_sum;
+    }
+    // Sweep counter-clockwise from the reference direction.
+    double theta = 0.;
+    for(std::size_t k = begin; k < end; ++k)
+    {
+      const std::size_t corner = m.fan_corners[k];
+      ts.corner_theta[corner] = theta;
+      theta += ts.angle_scale[v] * ts.corner_angle[corner];
+    }
+  }
+
+  ts.face_angle_defect.resize(m.number_of_faces());
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    double sum = 0.;
+    for(int c = 0; c < 3; ++c)
+      sum += ts.angle_scale[m.faces[f][c]] * ts.corner_angle[3 * f + c];
+    ts.face_angle_defect[f] = sum - CGAL_PI;
+  }
+  return ts;
+}
+
+struct Connection
+{
+  int degree = 1;
+  // transport[3f+c] = r_ij for the halfedge i -> j with i = faces[f][c], j = faces[f][c+1]
+  std::vector<std::complex<double> > transport;
+  std::vector<double> holonomy;  // Omega_t = n kappa_t (unwrapped)
+};
+
+// rho_ij = n (theta_j(j -> i) - theta_i(i -> j) + pi). Inside face (i, j, k),
+// the halfedge j -> i is the second side of j's corner, so
+// theta_j(j -> i) = theta_j(j -> k) + s_j alpha_j.
+inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces& ts, int degree)
+{
+  Connection con;
+  con.degree = degree;
+  const std::size_t nf = m.number_of_faces();
+  con.transport.resize(3 * nf);
+  con.holonomy.resize(nf);
+  const double n = static_cast<double>(degree);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::size_t ci = 3 * f + c, cj = 3 * f + (c + 1) % 3;
+      const std::size_t j = m.faces[f][(c + 1) % 3];
+      const double theta_ij = ts.corner_theta[ci];
+      const double theta_ji = ts.corner_theta[cj] + ts.angle_scale[j] * ts.corner_angle[cj];
+      // Reduce before multiplying by n so that large degrees keep their accuracy.
+      const double angle = std::remainder(theta_ji - theta_ij + CGAL_PI, 2. * CGAL_PI);
+      con.transport[ci] = std::polar(1., std::remainder(n * angle, 2. * CGAL_PI));
+    }
+    con.holonomy[f] = n * ts.face_angle_defect[f];
+  }
+  return con;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TANGENT_SPACES_H

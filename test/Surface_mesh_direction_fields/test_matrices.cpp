@@ -1,0 +1,330 @@
+// The building blocks, checked against exact expectations:
+//  * tangent spaces and connection: r_ji = conj(r_ij) across every interior
+//    edge, exp(i Omega_t) = r_ij r_jk r_ki, and Gauss-Bonnet sum Omega = 2 pi n chi;
+//  * on a planar mesh, the energy matrix is the cotan Laplacian, conjugated by
+//    the phases of the vertex bases (A = P^* L P), and M is scale-covariant;
+//  * A and M are Hermitian, A is positive semi-definite for s = -1, 0, 1;
+//  * on a round sphere of radius R, lambda_1 = n (1 - s) / R^2 (pins every sign
+//    and conjugation of method.md, section 4).
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+
+#include "generated_meshes.h"
+#include "test_support.h"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
+#include <complex>
+#include <iostream>
+#include <string>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace SI = CGAL::Surface_mesh_direction_fields::internal;
+typedef std::complex<double> Complex;
+
+static SI::Indexed_mesh index_mesh(const Mesh& mesh)
+{
+  return SI::make_indexed_mesh(
+    mesh, [&](Mesh::Vertex_index v) { const auto& p = mesh.point(v); return SI::Vec3{p.x(), p.y(), p.z()}; },
+    get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh));
+}
+
+static double max_abs(const SI::Complex_sparse_matrix& A)
+{
+  double m = 0.;
+  for(Eigen::Index c = 0; c < A.outerSize(); ++c)
+    for(SI::Complex_sparse_matrix::InnerIterator it(A, c); it; ++it) m = (std::max)(m, std::abs(it.value()));
+  return m;
+}
+
+static double hermitian_defect(const SI::Complex_sparse_matrix& A)
+{
+  const SI::Complex_sparse_matrix D = A - SI::Complex_sparse_matrix(A.adjoint());
+  return max_abs(D) / max_abs(A);
+}
+
+// Connection identities on every face and edge; Gauss-Bonnet when closed.
+static void check_connection(Test_report& report, const std::string& name, const Mesh& mesh, int n)
+{
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
+  const SI::Connection con = SI::compute_connection(m, ts, n);
+  double worst_holonomy = 0., worst_opposite = 0., total = 0.;
+  for(auto f : mesh.faces())
+  {
+    const std::size_t fi = f;
+    const Complex loop = con.transport[3 * fi] * con.transport[3 * fi + 1] * con.transport[3 * fi + 2];
+    worst_holonomy = (std::max)(worst_holonomy, std::abs(loop - std::polar(1., con.holonomy[fi])));
+    total += con.holonomy[fi];
+  }
+  for(auto h : mesh.halfedges())
+  {
+    if(mesh.is_border(h) || mesh.is_border(mesh.opposite(h))) continue;
+    auto corner_of = [&](Mesh::Halfedge_index g) {
+      auto f = mesh.face(g);
+      std::size_t c = 0;
+      for(auto k = mesh.halfedge(f); k != g; k = mesh.next(k)) ++c;
+      return 3 * std::size_t(f) + c;
+    };
+    const Complex r = con.transport[corner_of(h)], r_back = con.transport[corner_of(mesh.opposite(h))];
+    worst_opposite = (std::max)(worst_opposite, std::abs(r_back - std::conj(r)));
+  }
+  report.check(worst_holonomy < 1e-11, name + ": exp(i Omega) = r_ij r_jk r_ki (" + std::to_string(worst_holonomy) + ")");
+  report.check(worst_opposite < 1e-11, name + ": r_ji = conj(r_ij) (" + std::to_string(worst_opposite) + ")");
+  if(CGAL::is_closed(mesh))
+  {
+    const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
+    report.check(std::abs(total - 2. * CGAL_PI * n * chi) < 1e-8 * (1. + mesh.number_of_faces() * 1e-3),
+                 name + ": sum of Omega = 2 pi n chi");
+  }
+}
+
+// On a plane, with beta_i the angle of vertex i's reference direction, the
+// coefficient u_i is w_i exp(-i n beta_i) for the global complex value w_i, so
+// A = P^* L P with P = diag(exp(i n beta_i)) and L the real cotan Laplacian.
+static void check_planar_cotan_laplacian(Test_report& report, int n)
+{
+  Mesh mesh;
+  make_disk(mesh, 8, 1.3);
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
+  const SI::Connection con = SI::compute_connection(m, ts, n);
+  const SI::Components comps = SI::split_into_components(m);
+  for(double s : {-1., 0., 1.})
+  {
+    const SI::Energy_and_mass em = SI::assemble_energy_and_mass(m, ts, con, comps.list[0], comps.local_index, s);
+    const std::size_t nv = m.number_of_vertices();
+    // cotan Laplacian, and the boundary term of E_s, which on a plane is the
+    // signed area form: -s Im(conj(w_k) w_j) per boundary edge j -> k
+    // (checked against quadrature in check_local_matrices_by_quadrature).
+    Eigen::MatrixXcd L = Eigen::MatrixXcd::Zero(nv, nv);
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+      for(int c = 0; c < 3; ++c)
+      {
+        const std::size_t j = m.faces[f][(c + 1) % 3], k = m.faces[f][(c + 2) % 3];
+        const double w = 0.5 / std::tan(ts.corner_angle[3 * f + c]);  // cot(alpha_i) / 2
+        L(j, j) += w; L(k, k) += w; L(j, k) -= w; L(k, j) -= w;
+      }
+    for(auto h : mesh.halfedges())
+    {
+      if(!mesh.is_border(mesh.opposite(h))) continue;  // h: interior side of a boundary edge, j -> k
+      const std::size_t j = mesh.source(h), k = mesh.target(h);
+      L(k, j) -= Complex(0., 0.5 * s);
+      L(j, k) += Complex(0., 0.5 * s);
+    }
+    Eigen::VectorXcd phase(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const std::size_t corner = m.fan_corners[m.fan_offsets[v]];
+      const SI::Vec3 e = SI::operator-(m.points[m.faces[corner / 3][(corner + 1) % 3]], m.points[v]);
+      phase[v] = std::polar(1., n * std::atan2(e[1], e[0]));
+    }
+    const Eigen::MatrixXcd expected = phase.conjugate().asDiagonal() * L * phase.asDiagonal();
+    const Eigen::MatrixXcd A = Eigen::MatrixXcd(em.energy);
+    const double err = (A - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+    report.check(err < 1e-12, "planar A = P^* (cotan Laplacian + boundary term) P, n = " + std::to_string(n) +
+                              ", s = " + std::to_string(s) + " (error " + std::to_string(err) + ")");
+  }
+}
+
+// The local matrices against a direct quadrature of their defining integrals.
+// On a triangle (i, j, k) = (0,0), (1,0), (0,1) in parameter space, with a
+// connection of constant curvature, gauge A = -Omega (x dy - y dx): the section
+// transported along rays from a vertex is, in this gauge, phi_i = c_i,
+// phi_j = c_j exp(i Omega y), phi_k = c_k exp(-i Omega x), with constants fixed
+// by the transports along the edges (phi_j(v_k) = r_jk phi_k(v_k), ...). Then
+// psi_a = b_a phi_a, and
+//   M(a, b) = int conj(psi_a) psi_b,
+//   A_s(a, b) = int 2 (1 - s) conj(d psi_a) d psi_b + 2 (1 + s) conj(dbar psi_a) dbar psi_b,
+// with d = (nabla_E1 - i nabla_E2) / 2, dbar = (nabla_E1 + i nabla_E2) / 2 in an
+// orthonormal frame (E1, E2 = J E1). A_0 is the Dirichlet matrix.
+static void check_local_matrices_by_quadrature(Test_report& report)
+{
+  const Complex I(0., 1.);
+  // Gauss-Legendre nodes on [0, 1] (Golub-Welsch), Duffy map to the triangle.
+  const int N = 40;
+  std::vector<double> xs(N), ws(N);
+  {
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(N, N);
+    for(int k = 1; k < N; ++k) J(k, k - 1) = J(k - 1, k) = k / std::sqrt(4. * k * k - 1.);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
+    for(int k = 0; k < N; ++k) { xs[k] = (es.eigenvalues()[k] + 1.) / 2.; ws[k] = es.eigenvectors()(0, k) * es.eigenvectors()(0, k); }
+  }
+  const std::vector<std::array<SI::Vec3, 3> > triangles = {
+    {SI::Vec3{0, 0, 0}, SI::Vec3{1.3, 0.2, 0}, SI::Vec3{0.4, 1.1, 0}},
+    {SI::Vec3{0.2, -0.1, 0}, SI::Vec3{2.0, 0.1, 0}, SI::Vec3{1.9, 0.3, 0}},   // obtuse sliver
+    {SI::Vec3{0, 0, 0}, SI::Vec3{0.01, 0, 0}, SI::Vec3{0.004, 0.012, 0}}};   // small
+  double worst = 0.;
+  for(const auto& tri : triangles)
+    for(double omega : {-5.9, -2.5, -0.7, 1e-9, 0.3, 1.9, 3.1, 6.2})
+      for(double s : {-1., -0.3, 0., 1.})
+      {
+        // A one-face mesh with a synthetic connection of holonomy omega.
+        SI::Indexed_mesh m;
+        m.points = {tri[0], tri[1], tri[2]};
+        m.faces = {{0, 1, 2}};
+        SI::Tangent_spaces ts;
+        SI::compute_corner_angles_and_areas(m, ts);
+        SI::Connection con;
+        const Complex rij = std::polar(1., 0.7), rjk = std::polar(1., -1.9);
+        con.transport = {rij, rjk, std::exp(I * omega) / (rij * rjk)};
+        con.holonomy = {omega};
+        const SI::Local_matrices lm = SI::local_matrices(m, ts, con, 0, s);
+        Eigen::Matrix3cd A_closed = Eigen::Matrix3cd::Zero(), M_closed = Eigen::Matrix3cd::Zero();
+        for(int c = 0; c < 3; ++c)
+        {
+          const int j = (c + 1) % 3, k = (c + 2) % 3;
+          A_closed(c, c) = lm.energy_diagonal[c]; M_closed(c, c) = lm.mass_diagonal[c];
+          A_closed(k, j) = lm.energy_pair[c]; A_closed(j, k) = std::conj(lm.energy_pair[c]);
+          M_closed(k, j) = lm.mass_pair[c]; M_closed(j, k) = std::conj(lm.mass_pair[c]);
+        }
+
+        const SI::Vec3 e1 = SI::operator-(tri[1], tri[0]), e2 = SI::operator-(tri[2], tri[0]);
+        const double g11 = SI::dot(e1, e1), g12 = SI::dot(e1, e2), g22 = SI::dot(e2, e2);
+        const double area = ts.face_area[0];
+        const Complex cj = rjk * std::exp(-I * omega), ci = rij * cj, ck = 1.;
+        Eigen::Matrix3cd A_quad = Eigen::Matrix3cd::Zero(), M_quad = Eigen::Matrix3cd::Zero();
+        for(int a = 0; a < N; ++a)
+          for(int b = 0; b < N; ++b)
+          {
+            const double x = xs[a], y = (1. - xs[a]) * xs[b], w = ws[a] * ws[b] * (1. - xs[a]) * 2. * area;
+            const double bary[3] = {1. - x - y, x, y}, dbx[3] = {-1., 1., 0.}, dby[3] = {-1., 0., 1.};
+            const Complex phi[3] = {ci, cj * std::exp(I * omega * y), ck * std::exp(-I * omega * x)};
+            const Complex dphix[3] = {0., 0., -I * omega * phi[2]}, dphiy[3] = {0., I * omega * phi[1], 0.};
+            const Complex Ax = omega * y, Ay = -omega * x;
+            Complex psi[3], d[3], dbar[3];
+            for(int q = 0; q < 3; ++q)
+            {
+              psi[q] = bary[q] * phi[q];
+              const Complex nx = dbx[q] * phi[q] + bary[q] * dphix[q] + I * Ax * psi[q];
+              const Complex ny = dby[q] * phi[q] + bary[q] * dphiy[q] + I * Ay * psi[q];
+              const Complex n1 = nx / std::sqrt(g11), n2 = (g11 * ny - g12 * nx) / (2. * area * std::sqrt(g11));
+              d[q] = 0.5 * (n1 - I * n2);
+              dbar[q] = 0.5 * (n1 + I * n2);
+            }
+            for(int r = 0; r < 3; ++r)
+              for(int c = 0; c < 3; ++c)
+              {
+                A_quad(r, c) += w * (2. * (1. - s) * std::conj(d[r]) * d[c] + 2. * (1. + s) * std::conj(dbar[r]) * dbar[c]);
+                M_quad(r, c) += w * std::conj(psi[r]) * psi[c];
+              }
+          }
+        worst = (std::max)(worst, (A_quad - A_closed).cwiseAbs().maxCoeff() / A_quad.cwiseAbs().maxCoeff());
+        worst = (std::max)(worst, (M_quad - M_closed).cwiseAbs().maxCoeff() / M_quad.cwiseAbs().maxCoeff());
+        (void)g22;
+      }
+  std::cout << "local matrices vs quadrature: worst relative difference " << worst << "\n";
+  report.check(worst < 1e-11, "local mass and energy matrices equal the quadrature of their integrals");
+}
+
+// Positive semi-definiteness: A + delta M has a positive LDL^T diagonal for a
+// shift delta = 1e-9 trace(A)/trace(M), far below the eigenvalues it must not hide.
+static void check_hermitian_and_psd(Test_report& report, const std::string& name, const Mesh& mesh, int n)
+{
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
+  const SI::Connection con = SI::compute_connection(m, ts, n);
+  const SI::Components comps = SI::split_into_components(m);
+  for(double s : {-1., 0., 1.})
+  {
+    bool hermitian = true, psd = true;
+    for(const auto& comp : comps.list)
+    {
+      const SI::Energy_and_mass em = SI::assemble_energy_and_mass(m, ts, con, comp, comps.local_index, s);
+      hermitian = hermitian && hermitian_defect(em.energy) < 1e-14 && hermitian_defect(em.mass) < 1e-14;
+      const double sigma = em.energy.diagonal().real().sum() / em.mass.diagonal().real().sum();
+      Eigen::SimplicialLDLT<SI::Complex_sparse_matrix> ldlt(em.energy + 1e-9 * sigma * em.mass);
+      psd = psd && ldlt.info() == Eigen::Success && ldlt.vectorD().real().minCoeff() > 0.;
+      Eigen::SimplicialLDLT<SI::Complex_sparse_matrix> mass_ldlt(em.mass);
+      psd = psd && mass_ldlt.info() == Eigen::Success && mass_ldlt.vectorD().real().minCoeff() > 0.;
+    }
+    report.check(hermitian, name + ": A and M Hermitian, s = " + std::to_string(s));
+    report.check(psd, name + ": A positive semi-definite and M positive definite, n = " + std::to_string(n) +
+                      ", s = " + std::to_string(s));
+  }
+}
+
+// lambda_1 R^2 = n (1 - s) on a round sphere; the discretization error on the
+// 10242-vertex icosphere is about 1e-3 relative (measured: see the output).
+static void check_sphere_eigenvalues(Test_report& report)
+{
+  const double R = 3.;
+  Mesh mesh;
+  make_icosphere(mesh, 5, R);
+  auto dir = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:d").first;
+  for(int n = 1; n <= 4; ++n)
+    for(double s : {-1., -0.5, 0., 0.5, 1.})
+    {
+      const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+        mesh, dir, CGAL::parameters::degree(n).smoothness_parameter(s).number_of_iterations(300));
+      const double got = r.components[0].eigenvalue * R * R, expected = n * (1. - s);
+      std::cout << "sphere n = " << n << " s = " << s << ": lambda R^2 = " << got << " (exact " << expected << ")\n";
+      report.check(std::abs(got - expected) <= 1.5e-3 * n + 1e-3 * expected,
+                   "sphere eigenvalue n (1 - s) / R^2 for n = " + std::to_string(n) + ", s = " + std::to_string(s));
+    }
+}
+
+int main()
+{
+  Test_report report("matrices");
+
+  Mesh sphere, torus, disk;
+  make_icosphere(sphere, 3);
+  make_torus(torus, 2., 0.7, 40, 20);
+  make_disk(disk, 6);
+  for(int n : {1, 2, 4, 7})
+  {
+    check_connection(report, "icosphere", sphere, n);
+    check_connection(report, "torus", torus, n);
+    check_connection(report, "disk", disk, n);
+  }
+  check_local_matrices_by_quadrature(report);
+  for(int n : {1, 3, 4})
+    check_planar_cotan_laplacian(report, n);
+
+  // Scaling the mesh by c leaves A unchanged and multiplies M by c^2.
+  {
+    Mesh big = torus;
+    for(auto v : big.vertices()) big.point(v) = CGAL::ORIGIN + 1e3 * (big.point(v) - CGAL::ORIGIN);
+    const SI::Indexed_mesh m1 = index_mesh(torus), m2 = index_mesh(big);
+    const SI::Tangent_spaces t1 = SI::compute_tangent_spaces(m1), t2 = SI::compute_tangent_spaces(m2);
+    const SI::Connection c1 = SI::compute_connection(m1, t1, 4), c2 = SI::compute_connection(m2, t2, 4);
+    const SI::Components k1 = SI::split_into_components(m1), k2 = SI::split_into_components(m2);
+    const SI::Energy_and_mass e1 = SI::assemble_energy_and_mass(m1, t1, c1, k1.list[0], k1.local_index, 0.5);
+    const SI::Energy_and_mass e2 = SI::assemble_energy_and_mass(m2, t2, c2, k2.list[0], k2.local_index, 0.5);
+    report.check(max_abs(e1.energy - e2.energy) < 1e-10 * max_abs(e1.energy), "A is scale invariant");
+    report.check(max_abs(1e6 * e1.mass - e2.mass) < 1e-10 * max_abs(e2.mass), "M scales with the area");
+  }
+
+  for(const char* const* name = closed_shared_meshes(); *name; ++name)
+  {
+    const std::string path = shared_mesh_path(*name);
+    if(path.empty()) continue;
+    Mesh mesh;
+    if(!report.check(CGAL::IO::read_polygon_mesh(path, mesh), std::string("read ") + *name)) continue;
+    check_connection(report, *name, mesh, 4);
+    if(mesh.number_of_vertices() <= 60000)
+      for(int n : {1, 4})
+        check_hermitian_and_psd(report, *name, mesh, n);
+  }
+  for(const char* const* name = open_shared_meshes(); *name; ++name)
+  {
+    const std::string path = shared_mesh_path(*name);
+    if(path.empty()) continue;
+    Mesh mesh;
+    if(!report.check(CGAL::IO::read_polygon_mesh(path, mesh), std::string("read ") + *name)) continue;
+    check_connection(report, *name, mesh, 4);
+    for(int n : {1, 4})
+      check_hermitian_and_psd(report, *name, mesh, n);
+  }
+  check_hermitian_and_psd(report, "disk", disk, 2);
+
+  check_sphere_eigenvalues(report);
+  return report.finish();
+}
