@@ -1,1 +1,399 @@
-int main(){return 0;}
+// End-to-end checks of compute_globally_optimal_directions():
+//  * discrete Poincare-Hopf: the indices of a closed component add up to
+//    n chi, for n = 1..6 and s in {-1, 0, 1}, on every closed shared mesh, on
+//    generated spheres and tori, and per component on bones.off;
+//  * closed forms: a flat disk has eigenvalue 0, a parallel field and no
+//    singularity; a torus of revolution carries a cross field without
+//    singularity; a sphere's vector field has index sum 2;
+//  * invariance under rotation, translation and uniform scaling (x1e-3, x1e3);
+//  * every output vector has unit length, is orthogonal to the vertex normal
+//    (ours or the one given by vertex_normal_map), and is finite;
+//  * the documented errors on bad input, with the input left untouched;
+//  * determinism for a seed, and the optional outputs.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+
+#include "generated_meshes.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace params = CGAL::parameters;
+
+typedef std::vector<std::pair<Face_index, int> > Singularities;
+
+static Mesh::Property_map<Vertex_index, Vector_3> direction_map(Mesh& mesh)
+{
+  return mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
+}
+
+// Angle-weighted vertex normals, computed here independently of the package.
+static std::vector<Vector_3> angle_weighted_normals(const Mesh& mesh)
+{
+  std::vector<Vector_3> normals(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
+  for(Face_index f : mesh.faces())
+  {
+    auto h = mesh.halfedge(f);
+    for(int c = 0; c < 3; ++c, h = mesh.next(h))
+    {
+      const Point_3& p = mesh.point(mesh.source(h));
+      const Vector_3 a = mesh.point(mesh.target(h)) - p;
+      const Vector_3 b = mesh.point(mesh.source(mesh.prev(h))) - p;
+      const Vector_3 n = CGAL::cross_product(a, b);
+      const double angle = std::atan2(std::sqrt(n.squared_length()), a * b);
+      normals[mesh.source(h)] = normals[mesh.source(h)] + angle * n / std::sqrt(n.squared_length());
+    }
+  }
+  for(Vector_3& n : normals)
+    if(n != CGAL::NULL_VECTOR) n = n / std::sqrt(n.squared_length());
+  return normals;
+}
+
+// Unit length, finite, orthogonal to the given normals (1e-9).
+template <typename Directions>
+static void check_outputs(Test_report& report, const std::string& name, const Mesh& mesh, const Directions& dir,
+                          const std::vector<Vector_3>& normals)
+{
+  double worst_length = 0., worst_normal = 0.;
+  bool finite = true;
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Vector_3 d = dir[v];
+    if(mesh.is_isolated(v))  // documented: the zero vector
+    {
+      finite = finite && d == CGAL::NULL_VECTOR;
+      continue;
+    }
+    finite = finite && std::isfinite(d.x()) && std::isfinite(d.y()) && std::isfinite(d.z());
+    worst_length = (std::max)(worst_length, std::abs(std::sqrt(d.squared_length()) - 1.));
+    worst_normal = (std::max)(worst_normal, std::abs(d * normals[v]));
+  }
+  report.check(finite, name + ": finite outputs (zero at isolated vertices)");
+  report.check(worst_length < 1e-12, name + ": unit length (" + std::to_string(worst_length) + ")");
+  report.check(worst_normal < 1e-9, name + ": orthogonal to the vertex normal (" + std::to_string(worst_normal) + ")");
+}
+
+static int euler_characteristic(const Mesh& mesh)
+{
+  return int(mesh.number_of_vertices()) - int(mesh.number_of_edges()) + int(mesh.number_of_faces());
+}
+
+// Poincare-Hopf for n = 1..6 and s in {-1, 0, 1}. The identity holds for any
+// field, converged or not, so large meshes run with few iterations.
+static void check_poincare_hopf(Test_report& report, const std::string& name, Mesh& mesh, bool per_component = false)
+{
+  auto dir = direction_map(mesh);
+  const unsigned int iterations = mesh.number_of_vertices() > 20000 ? 20u : 300u;
+  bool all = true;
+  for(int n = 1; n <= 6; ++n)
+    for(double s : {-1., 0., 1.})
+    {
+      Singularities sing;
+      const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+        mesh, dir, params::degree(n).smoothness_parameter(s).number_of_iterations(iterations)
+                     .singularities_output_iterator(std::back_inserter(sing)));
+      int chi = 0, sum = 0;
+      bool components_ok = true;
+      for(const auto& c : r.components)
+      {
+        chi += c.euler_characteristic;
+        components_ok = components_ok && c.is_closed && c.index_sum == n * c.euler_characteristic;
+      }
+      for(const auto& fk : sing) sum += fk.second;
+      const bool ok = chi == euler_characteristic(mesh) && r.index_sum == n * chi && sum == r.index_sum &&
+                      sing.size() == r.number_of_singular_faces && (!per_component || components_ok);
+      if(!ok)
+        std::cerr << name << " n = " << n << " s = " << s << ": index sum " << r.index_sum << ", n chi = " << n * chi
+                  << std::endl;
+      all = all && ok;
+    }
+  report.check(all, name + ": Poincare-Hopf (index sum = n chi" + (per_component ? " per component" : "") +
+                    ") for n = 1..6, s = -1, 0, 1");
+}
+
+static void check_flat_disk(Test_report& report)
+{
+  Mesh disk;
+  make_disk(disk, 12, 2.);
+  auto dir = direction_map(disk);
+  for(int n : {1, 2, 4})
+  {
+    Singularities sing;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      disk, dir, params::degree(n).singularities_output_iterator(std::back_inserter(sing)));
+    // radius 2: the next eigenvalues are O(1)
+    report.check(std::abs(r.components[0].eigenvalue) < 1e-8,
+                 "flat disk: eigenvalue 0 (n = " + std::to_string(n) + ", got " + std::to_string(r.components[0].eigenvalue) + ")");
+    report.check(sing.empty(), "flat disk: no singular face, n = " + std::to_string(n));
+    // All directions parallel modulo 2 pi / n.
+    const double a0 = std::atan2(dir[Vertex_index(0)].y(), dir[Vertex_index(0)].x());
+    double worst = 0.;
+    for(Vertex_index v : disk.vertices())
+    {
+      double d = n * (std::atan2(dir[v].y(), dir[v].x()) - a0);
+      d = std::remainder(d, 2. * CGAL_PI) / n;
+      worst = (std::max)(worst, std::abs(d));
+    }
+    report.check(worst < 1e-6, "flat disk: parallel directions within 1e-6 rad, n = " + std::to_string(n) +
+                               " (" + std::to_string(worst) + ")");
+  }
+}
+
+static void check_torus_and_sphere(Test_report& report)
+{
+  // A thin torus (R/r = 10). On fat tori (R/r <= 4 here) the smoothest cross
+  // field has pairs of singularities of opposite index, for any resolution.
+  Mesh torus;
+  make_torus(torus, 10., 1., 200, 24);
+  auto dir = direction_map(torus);
+  Singularities sing;
+  SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+    torus, dir, params::degree(4).singularities_output_iterator(std::back_inserter(sing)));
+  report.check(sing.empty(), "torus of revolution, n = 4: no singular face (" + std::to_string(sing.size()) + ")");
+  check_outputs(report, "torus", torus, dir, angle_weighted_normals(torus));
+
+  Mesh sphere;
+  make_icosphere(sphere, 3);
+  auto sdir = direction_map(sphere);
+  sing.clear();
+  r = SMDF::compute_globally_optimal_directions(sphere, sdir, params::singularities_output_iterator(std::back_inserter(sing)));
+  int sum = 0;
+  for(const auto& fk : sing) sum += fk.second;
+  report.check(r.index_sum == 2 && sum == 2, "sphere, n = 1: index sum 2");
+}
+
+// The same field (rotated with the mesh) after a rigid motion or a uniform
+// scaling: the computation is intrinsic and the seed fixes the start vector.
+static void check_invariance(Test_report& report, const Mesh& base, const std::string& name)
+{
+  Mesh reference = base;
+  auto dref = direction_map(reference);
+  const SMDF::Direction_field_result r0 = SMDF::compute_globally_optimal_directions(reference, dref, params::degree(4));
+  // a rotation about an oblique axis
+  const double c = std::cos(0.83), s = std::sin(0.83);
+  const Vector_3 axis = Vector_3(1., 2., -0.5) / std::sqrt(5.25);
+  auto rotate = [&](const Vector_3& v) {
+    return c * v + s * CGAL::cross_product(axis, v) + (1. - c) * (axis * v) * axis;
+  };
+  struct Motion { std::string label; double scale; bool rotate; Vector_3 shift; };
+  const std::vector<Motion> motions = {{"rotation", 1., true, CGAL::NULL_VECTOR},
+                                       {"translation", 1., false, Vector_3(12., -7., 30.)},
+                                       {"scale 1e-3", 1e-3, false, CGAL::NULL_VECTOR},
+                                       {"scale 1e3", 1e3, false, CGAL::NULL_VECTOR},
+                                       {"all", 1e3, true, Vector_3(-3e3, 1e3, 5e2)}};
+  for(const Motion& m : motions)
+  {
+    Mesh moved = base;
+    for(Vertex_index v : moved.vertices())
+    {
+      Vector_3 p = moved.point(v) - CGAL::ORIGIN;
+      if(m.rotate) p = rotate(p);
+      moved.point(v) = CGAL::ORIGIN + m.scale * p + m.shift;
+    }
+    auto dmoved = direction_map(moved);
+    const SMDF::Direction_field_result r1 = SMDF::compute_globally_optimal_directions(moved, dmoved, params::degree(4));
+    double worst = 0.;
+    for(Vertex_index v : moved.vertices())
+    {
+      const Vector_3 expected = m.rotate ? rotate(dref[v]) : dref[v];
+      const double sin_angle = std::sqrt(CGAL::cross_product(expected, dmoved[v]).squared_length());
+      const double cos_angle = expected * dmoved[v];
+      worst = (std::max)(worst, std::abs(std::atan2(sin_angle, cos_angle)));
+    }
+    const double eig_ratio = r1.components[0].eigenvalue * m.scale * m.scale / r0.components[0].eigenvalue;
+    report.check(worst < 1e-6, name + ", " + m.label + ": same field within 1e-6 rad (" + std::to_string(worst) + ")");
+    report.check(std::abs(eig_ratio - 1.) < 1e-9, name + ", " + m.label + ": eigenvalue scales as 1 / scale^2");
+    report.check(r1.index_sum == r0.index_sum && r1.number_of_singular_faces == r0.number_of_singular_faces,
+                 name + ", " + m.label + ": same singularities");
+  }
+}
+
+template <typename F>
+static bool throws_invalid_input(F f)
+{
+  try { f(); }
+  catch(const SMDF::Invalid_input_error& e) { std::cout << "  expected error: " << e.what() << "\n"; return true; }
+  catch(...) { return false; }
+  return false;
+}
+
+static void check_bad_input(Test_report& report)
+{
+  Mesh sphere;
+  make_icosphere(sphere, 1);
+  auto dir = direction_map(sphere);
+  const Mesh copy = sphere;
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(sphere, dir, params::degree(0)); }), "n = 0 rejected");
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(sphere, dir, params::degree(-3)); }), "n < 0 rejected");
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(sphere, dir, params::smoothness_parameter(1.5)); }), "s > 1 rejected");
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(sphere, dir, params::smoothness_parameter(-1.01)); }), "s < -1 rejected");
+  report.check(throws_invalid_input([&] {
+    SMDF::compute_globally_optimal_directions(sphere, dir, params::smoothness_parameter(std::numeric_limits<double>::quiet_NaN())); }), "s = NaN rejected");
+  bool untouched = true;
+  for(Vertex_index v : sphere.vertices()) untouched = untouched && dir[v] == CGAL::NULL_VECTOR && sphere.point(v) == copy.point(v);
+  report.check(untouched, "rejected calls write nothing and leave the mesh as it was");
+
+  Mesh empty;
+  auto edir = direction_map(empty);
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(empty, edir); }), "empty mesh rejected");
+
+  Mesh quad;
+  {
+    auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
+         c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
+    quad.add_face(a, b, c, d);
+  }
+  auto qdir = direction_map(quad);
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(quad, qdir); }), "quad face rejected");
+
+  Mesh nan_mesh = sphere;
+  nan_mesh.point(Vertex_index(5)) = Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  auto ndir = direction_map(nan_mesh);
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(nan_mesh, ndir); }), "NaN coordinate rejected");
+
+  Mesh flat_face = sphere;  // move a vertex onto the line of two others: a zero-area face
+  {
+    auto h = flat_face.halfedge(Face_index(0));
+    const Point_3 a = flat_face.point(flat_face.source(h)), b = flat_face.point(flat_face.target(h));
+    flat_face.point(flat_face.target(flat_face.next(h))) = CGAL::midpoint(a, b);
+  }
+  auto fdir = direction_map(flat_face);
+  report.check(throws_invalid_input([&] { SMDF::compute_globally_optimal_directions(flat_face, fdir); }), "zero-area face rejected");
+}
+
+// Several components, an isolated vertex, determinism, optional outputs.
+static void check_components_and_outputs(Test_report& report)
+{
+  Mesh mesh;
+  make_icosphere(mesh, 2);
+  Mesh torus;
+  make_torus(torus, 2., 0.6, 30, 12);
+  for(Vertex_index v : torus.vertices()) torus.point(v) = torus.point(v) + Vector_3(5., 0., 0.);
+  CGAL::copy_face_graph(torus, mesh);
+  const Vertex_index isolated = mesh.add_vertex(Point_3(9., 9., 9.));
+  auto dir = direction_map(mesh);
+  auto magnitude = mesh.add_property_map<Vertex_index, double>("v:magnitude", -1.).first;
+  Singularities sing;
+  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+    mesh, dir, params::degree(2).vertex_magnitude_map(magnitude).singularities_output_iterator(std::back_inserter(sing)));
+  report.check(r.components.size() == 2, "two components found");
+  report.check(r.components.size() == 2 && r.components[0].index_sum == 4 && r.components[1].index_sum == 0,
+               "Poincare-Hopf per component (sphere 2 n, torus 0)");
+  report.check(r.number_of_isolated_vertices == 1 && dir[isolated] == CGAL::NULL_VECTOR && magnitude[isolated] == 0.,
+               "an isolated vertex gets the zero vector and magnitude 0");
+  bool magnitudes_ok = true;
+  for(Vertex_index v : mesh.vertices()) magnitudes_ok = magnitudes_ok && std::isfinite(magnitude[v]) && magnitude[v] >= 0.;
+  report.check(magnitudes_ok, "magnitudes finite and non-negative");
+  {
+    // On a single sphere: area-weighted mean square of the magnitude is 1
+    // (lumped quadrature, hence the tolerance).
+    Mesh ball;
+    make_icosphere(ball, 3, 2.5);
+    auto bdir = direction_map(ball);
+    auto bmag = ball.add_property_map<Vertex_index, double>("v:magnitude", -1.).first;
+    SMDF::compute_globally_optimal_directions(ball, bdir, params::degree(3).vertex_magnitude_map(bmag));
+    double mean_square = 0., area = 0.;
+    for(Face_index f : ball.faces())
+    {
+      const double a = CGAL::Polygon_mesh_processing::face_area(f, ball);
+      area += a;
+      for(Vertex_index v : CGAL::vertices_around_face(ball.halfedge(f), ball)) mean_square += a / 3. * bmag[v] * bmag[v];
+    }
+    report.check(std::abs(mean_square / area - 1.) < 0.02, "magnitude: area-weighted mean square 1 (" +
+                                                           std::to_string(mean_square / area) + ")");
+  }
+
+  auto dir2 = mesh.add_property_map<Vertex_index, Vector_3>("v:direction2", CGAL::NULL_VECTOR).first;
+  SMDF::compute_globally_optimal_directions(mesh, dir2, params::degree(2));
+  bool same = true;
+  for(Vertex_index v : mesh.vertices()) same = same && dir[v] == dir2[v];
+  report.check(same, "same seed, same field (bitwise)");
+  SMDF::compute_globally_optimal_directions(mesh, dir2, params::degree(2).random_seed(7));
+  int differ = 0;
+  for(Vertex_index v : mesh.vertices()) differ += (dir[v] != dir2[v]);
+  std::cout << "  another seed changes " << differ << " of " << mesh.number_of_vertices() << " directions (global phase)\n";
+
+  // Given normals: the outputs are orthogonal to them.
+  auto normals = mesh.add_property_map<Vertex_index, Vector_3>("v:normal", CGAL::NULL_VECTOR).first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  normals[isolated] = Vector_3(0, 0, 1);
+  SMDF::compute_globally_optimal_directions(mesh, dir2, params::degree(2).vertex_normal_map(normals));
+  double worst = 0.;
+  for(Vertex_index v : mesh.vertices())
+    if(v != isolated) worst = (std::max)(worst, std::abs(dir2[v] * normals[v]));
+  report.check(worst < 1e-9, "orthogonal to the normals given by vertex_normal_map");
+}
+
+int main()
+{
+  Test_report report("fields");
+
+  Mesh sphere, torus;
+  make_icosphere(sphere, 4);
+  make_torus(torus, 2., 0.7, 48, 20);
+  check_poincare_hopf(report, "icosphere", sphere);
+  check_poincare_hopf(report, "generated torus", torus);
+  for(const char* const* name = closed_shared_meshes(); *name; ++name)
+  {
+    const std::string path = shared_mesh_path(*name);
+    if(path.empty()) continue;
+    Mesh mesh;
+    if(!report.check(CGAL::IO::read_polygon_mesh(path, mesh), std::string("read ") + *name)) continue;
+    check_poincare_hopf(report, *name, mesh, std::string(*name) == "bones.off");
+  }
+
+  // Unit, tangent, finite outputs on the shared meshes with one component.
+  for(const char* const* list : {closed_shared_meshes(), open_shared_meshes()})
+    for(const char* const* name = list; *name; ++name)
+    {
+      const std::string path = shared_mesh_path(*name);
+      if(path.empty() || std::string(*name) == "nefertiti_sub4.off") continue;
+      Mesh mesh;
+      if(!report.check(CGAL::IO::read_polygon_mesh(path, mesh), std::string("read ") + *name)) continue;
+      auto dir = direction_map(mesh);
+      const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(4));
+      std::cout << *name << ": |V| = " << mesh.number_of_vertices() << ", eigenvalue " << r.components[0].eigenvalue
+                << ", " << r.iterations << " iterations, residual " << r.residual << ", "
+                << r.number_of_singular_faces << " singular faces\n";
+      check_outputs(report, *name, mesh, dir, angle_weighted_normals(mesh));
+      bool eigenvalues_finite = true;
+      for(const auto& c : r.components) eigenvalues_finite = eigenvalues_finite && std::isfinite(c.eigenvalue) && c.eigenvalue > -1e-9;
+      report.check(eigenvalues_finite, std::string(*name) + ": finite, non-negative eigenvalues");
+    }
+
+  check_flat_disk(report);
+  check_torus_and_sphere(report);
+  {
+    const std::string path = shared_mesh_path("spot.off");
+    Mesh spot;
+    if(!path.empty() && CGAL::IO::read_polygon_mesh(path, spot)) check_invariance(report, spot, "spot");
+    Mesh lumpy;
+    make_icosphere(lumpy, 3);
+    for(Vertex_index v : lumpy.vertices())  // a sphere with bumps: no symmetry
+    {
+      const Vector_3 p = lumpy.point(v) - CGAL::ORIGIN;
+      lumpy.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 1.) * std::cos(2. * p.y()) + 0.1 * p.z()) * p;
+    }
+    check_invariance(report, lumpy, "lumpy sphere");
+  }
+  check_bad_input(report);
+  check_components_and_outputs(report);
+  return report.finish();
+}

@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -41,8 +42,9 @@ struct Tangent_spaces
   std::vector<double> face_angle_defect;  // kappa_t = sum of the rescaled corner angles - pi
 };
 
-// Euclidean corner angles and areas; a face of zero area (or so thin that one
-// of its angles is not a number) is rejected: its matrices are undefined.
+// Euclidean corner angles and areas. A face whose area is zero, or zero up to
+// rounding (below 1e-14 times its longest edge squared, i.e. an angle sine
+// below about 1e-14), is rejected: its matrices are undefined.
 inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_spaces& ts)
 {
   const std::size_t nf = m.number_of_faces();
@@ -61,7 +63,9 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
     const Vec3& p0 = m.points[t[0]];
     const double area = 0.5 * norm(cross(m.points[t[1]] - p0, m.points[t[2]] - p0));
     ts.face_area[f] = area;
-    if(!(area > 0.) || !std::isfinite(area))
+    const double longest = (std::max)({squared_norm(m.points[t[1]] - p0), squared_norm(m.points[t[2]] - p0),
+                                       squared_norm(m.points[t[2]] - m.points[t[1]])});
+    if(!(area > 1e-14 * longest) || !std::isfinite(area))
       throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
   }
 }
