@@ -5,7 +5,7 @@
 # Must run before find_package(CGAL), which reads CGAL_DATA_DIR.
 set(SMDF_CGAL_DEMO_DATA "/usr/share/doc/libcgal-dev/data.tar.gz" CACHE FILEPATH
     "CGAL's demo data archive (Debian package libcgal-demo)")
-set(SMDF_DEFAULT_MESHES meshes/elephant.off meshes/fandisk.off meshes/eight.off)
+set(SMDF_DEFAULT_MESHES meshes/fandisk.off)
 set(SMDF_DATA_ROOT "${CMAKE_BINARY_DIR}/cgal-data")
 
 if(NOT CGAL_DATA_DIR)

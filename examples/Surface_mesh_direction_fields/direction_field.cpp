@@ -2,10 +2,10 @@
 //
 //   direction_field [MESH] [--degree N] [--s S] [--directions FILE]
 //                   [--singularities FILE] [--json] [--png FILE]
-//                   [--seed N] [--max-iterations N] [--tolerance T]
+//                   [--json-file FILE] [--seed N] [--max-iterations N] [--tolerance T]
 //
 // Computes the globally smoothest n-direction field of a triangle mesh (OFF,
-// OBJ, PLY or STL) and its singular faces. With no MESH, CGAL's elephant
+// OBJ, PLY or STL) and its singular faces. With no MESH, CGAL's fandisk
 // (Debian package libcgal-demo) is used. The contract of the first six
 // options is relied upon by other programs: it is only ever extended.
 //
@@ -15,6 +15,7 @@
 //   --singularities FILE  one line "f k" per singular face: the face's index in
 //                         the input file and its integer index k (index k/n)
 //   --json                one line of JSON on stdout (see README.md)
+//   --json-file FILE      the same line of JSON written to FILE
 //   --png FILE            a picture of the field (shaded mesh, directions,
 //                         singular faces in red (+) and blue (-))
 // Exit status 0 on success; otherwise 1, with one line on stderr.
@@ -54,7 +55,7 @@ struct Options
   std::string mesh;
   int degree = 4;
   double s = 0.;
-  std::string directions, singularities, png;
+  std::string directions, singularities, png, json_file;
   bool json = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
@@ -66,7 +67,8 @@ struct Usage_error : std::runtime_error { using std::runtime_error::runtime_erro
 
 const char* const usage =
   "usage: direction_field [MESH] [--degree N] [--s S] [--directions FILE] [--singularities FILE]\n"
-  "                       [--json] [--png FILE] [--seed N] [--max-iterations N] [--tolerance T]\n";
+  "                       [--json] [--json-file FILE] [--png FILE] [--seed N] [--max-iterations N]\n"
+  "                       [--tolerance T]\n";
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
@@ -96,6 +98,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--singularities") o.singularities = value();
     else if(a == "--png") o.png = value();
     else if(a == "--json") o.json = true;
+    else if(a == "--json-file") o.json_file = value();
     else if(a == "--seed") o.seed = parse_number<unsigned int>(a, value());
     else if(a == "--max-iterations") o.max_iterations = parse_number<unsigned int>(a, value());
     else if(a == "--tolerance") o.tolerance = parse_number<double>(a, value());
@@ -104,7 +107,7 @@ Options parse_options(int argc, char** argv)
     else throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
   }
   if(o.mesh.empty())
-    o.mesh = CGAL::data_file_path("meshes/elephant.off");
+    o.mesh = CGAL::data_file_path("meshes/fandisk.off");
   return o;
 }
 
@@ -276,6 +279,12 @@ int main(int argc, char** argv)
         throw Usage_error("cannot write '" + o.png + "'");
     }
 
+    if(!o.json_file.empty())
+    {
+      std::ofstream os;
+      open_or_throw(os, o.json_file);
+      write_json(os, o, mesh, result);
+    }
     if(o.json) write_json(std::cout, o, mesh, result);
     else write_summary(std::cout, o, mesh, result);
     return EXIT_SUCCESS;

@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# The command-line contract of direction_field (README.md, "Command line"):
+# outputs, their order and format, the JSON keys, and one line on stderr with a
+# non-zero status on bad input.
+#   usage: test_command_line.sh DIRECTION_FIELD SHARED_MESH_DIR OUTPUT_DIR
+set -u
+bin=$1
+shared=$2
+out=$3
+rm -rf "$out"
+mkdir -p "$out"
+passed=0
+failed=0
+check() {  # check DESCRIPTION COMMAND...
+  local what=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $what"; fi
+}
+
+# A small closed mesh of our own (an octahedron, chi = 2), one with an
+# isolated vertex in front, a quad, a truncated file and a NaN.
+cat > "$out/octahedron.off" <<'EOF'
+OFF
+6 8 0
+1 0 0
+-1 0 0
+0 1 0
+0 -1 0
+0 0 1
+0 0 -1
+3 0 2 4
+3 2 1 4
+3 1 3 4
+3 3 0 4
+3 2 0 5
+3 1 2 5
+3 3 1 5
+3 0 3 5
+EOF
+{ echo OFF; echo "7 8 0"; echo "5 5 5"; sed -n '3,8p' "$out/octahedron.off";
+  sed -n '9,16p' "$out/octahedron.off" | awk '{print 3, $2+1, $3+1, $4+1}'; } > "$out/isolated_first.off"
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > "$out/quad.off"
+head -n 10 "$out/octahedron.off" > "$out/truncated.off"
+sed '3s/.*/nan 0 0/' "$out/octahedron.off" > "$out/nan.off"
+# the octahedron as OBJ
+{ sed -n '3,8p' "$out/octahedron.off" | awk '{print "v", $1, $2, $3}';
+  sed -n '9,16p' "$out/octahedron.off" | awk '{print "f", $2+1, $3+1, $4+1}'; } > "$out/octahedron.obj"
+
+python_checks() { python3 - "$@"; }
+
+# 1. Default mesh, JSON: one line with every documented key.
+"$bin" --json > "$out/default.json" 2> "$out/default.err"
+check "default run exits 0" test $? -eq 0
+check "default run prints one line of JSON" test "$(wc -l < "$out/default.json")" -eq 1
+check "JSON keys and types" python_checks "$out/default.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+keys = ["vertices", "faces", "components", "euler_characteristic", "degree", "s", "eigenvalues", "iterations",
+        "residual", "singular_faces", "index_sum", "timings_ms"]
+assert all(k in d for k in keys), [k for k in keys if k not in d]
+assert all(k in d["timings_ms"] for k in ["setup", "factorization", "solve", "total"])
+assert isinstance(d["eigenvalues"], list) and len(d["eigenvalues"]) == d["components"]
+assert d["degree"] == 4 and d["index_sum"] == 4 * d["euler_characteristic"]
+EOF
+
+# 2. Files: directions in input order, unit and tangent; singularities sum to n chi.
+for n in 1 2 4 5; do
+  "$bin" "$out/octahedron.off" --degree $n --s 0.5 --directions "$out/dir$n.txt" --singularities "$out/sing$n.txt" --json > "$out/oct$n.json"
+  check "octahedron n=$n exits 0" test $? -eq 0
+  check "octahedron n=$n outputs" python_checks "$out/octahedron.off" "$out/dir$n.txt" "$out/sing$n.txt" "$out/oct$n.json" $n <<'EOF'
+import json, math, sys
+lines = open(sys.argv[1]).read().split("\n")
+pts = [list(map(float, l.split())) for l in lines[2:8]]
+dirs = [list(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
+n = int(sys.argv[5])
+assert len(dirs) == 6 and all(len(d) == 3 for d in dirs)
+for p, d in zip(pts, dirs):  # the octahedron's vertex normal is the position itself
+    assert abs(math.sqrt(sum(x * x for x in d)) - 1) < 1e-12
+    assert abs(sum(a * b for a, b in zip(p, d))) < 1e-9
+sing = [tuple(map(int, l.split())) for l in open(sys.argv[3]) if l.strip()]
+assert sum(k for f, k in sing) == 2 * n and all(0 <= f < 8 and k != 0 for f, k in sing)
+d = json.load(open(sys.argv[4]))
+assert d["vertices"] == 6 and d["faces"] == 8 and d["euler_characteristic"] == 2 and d["index_sum"] == 2 * n
+assert d["singular_faces"] == len(sing) and d["degree"] == n and d["s"] == 0.5
+# 17 significant digits
+assert all(len(x.replace("-", "").replace(".", "").split("e")[0]) >= 15 for x in open(sys.argv[2]).readline().split() if float(x) != 0)
+EOF
+done
+
+# 3. An isolated vertex first: its line is the zero vector, the others follow in file order.
+"$bin" "$out/isolated_first.off" --directions "$out/iso.txt" > /dev/null
+check "isolated vertex run exits 0" test $? -eq 0
+check "isolated vertex gets 0 0 0, order kept" python_checks "$out/isolated_first.off" "$out/iso.txt" <<'EOF'
+import math, sys
+lines = open(sys.argv[1]).read().split("\n")
+pts = [list(map(float, l.split())) for l in lines[2:9]]
+dirs = [list(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
+assert len(dirs) == 7 and dirs[0] == [0.0, 0.0, 0.0]
+for p, d in zip(pts[1:], dirs[1:]):
+    assert abs(math.sqrt(sum(x * x for x in d)) - 1) < 1e-12 and abs(sum(a * b for a, b in zip(p, d))) < 1e-9
+EOF
+
+# 4. OBJ gives the same summary as OFF.
+"$bin" "$out/octahedron.obj" --json > "$out/obj.json"
+check "OBJ input" python_checks "$out/obj.json" "$out/oct4.json" <<'EOF'
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert a["vertices"] == 6 and a["faces"] == 8 and a["index_sum"] == 8
+EOF
+
+# 5. A shared mesh, with a picture.
+if [ -n "$shared" ] && [ -f "$shared/sphere_oded.off" ]; then
+  "$bin" "$shared/sphere_oded.off" --degree 4 --png "$out/sphere.png" --json > "$out/sphere.json"
+  check "sphere_oded run" test $? -eq 0
+  check "PNG is a non-blank picture" python_checks "$out/sphere.png" <<'EOF'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n"
+w, h = struct.unpack(">II", data[16:24])
+pos, idat = 8, b""
+while pos < len(data):
+    length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    if kind == b"IDAT": idat += data[pos + 8:pos + 8 + length]
+    pos += 12 + length
+raw = zlib.decompress(idat)
+assert len(raw) == h * (3 * w + 1)
+pixels = bytes(b for r in range(h) for b in raw[r * (3 * w + 1) + 1:(r + 1) * (3 * w + 1)])
+white = sum(1 for i in range(0, len(pixels), 3) if pixels[i:i + 3] == b"\xff\xff\xff")
+dark = sum(1 for i in range(0, len(pixels), 3) if max(pixels[i:i + 3]) < 60)
+assert 0.1 < white / (w * h) < 0.9, white / (w * h)   # a shape on a background
+assert dark > 1000                                     # the field's strokes
+EOF
+else
+  echo "SKIPPED shared-mesh checks: ../shared/data/meshes not found"
+fi
+
+# 6. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
+bad() {  # bad DESCRIPTION ARGS...
+  local what=$1
+  shift
+  "$bin" "$@" > "$out/bad.out" 2> "$out/bad.err"
+  local status=$?
+  check "$what: non-zero status" test $status -ne 0
+  check "$what: one line on stderr" test "$(wc -l < "$out/bad.err")" -eq 1
+  check "$what: nothing on stdout" test ! -s "$out/bad.out"
+  echo "  $what -> $(cat "$out/bad.err")"
+}
+bad "missing file" "$out/does_not_exist.off"
+bad "degree 0" "$out/octahedron.off" --degree 0
+bad "degree not a number" "$out/octahedron.off" --degree four
+bad "s outside [-1, 1]" "$out/octahedron.off" --s 1.5
+bad "unknown option" "$out/octahedron.off" --frobnicate
+bad "quad face" "$out/quad.off"
+bad "truncated file" "$out/truncated.off"
+bad "NaN coordinate" "$out/nan.off"
+bad "two meshes" "$out/octahedron.off" "$out/octahedron.off"
+bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.txt"
+
+echo "command line: $passed passed, $failed failed"
+test $failed -eq 0

@@ -30,7 +30,8 @@ Base class of the exceptions thrown by the functions of this package.
 class Direction_field_error : public std::runtime_error
 {
 public:
-  /// constructs the exception with the message `what`.
+  /// constructs the exception.
+  /// \param what the message, naming the problem
   explicit Direction_field_error(const std::string& what) : std::runtime_error(what) {}
 };
 
@@ -45,7 +46,8 @@ smoothness parameter `s` outside `[-1, 1]`. The input is left untouched.
 class Invalid_input_error : public Direction_field_error
 {
 public:
-  /// constructs the exception with the message `what`.
+  /// constructs the exception.
+  /// \param what the message, naming the problem
   explicit Invalid_input_error(const std::string& what) : Direction_field_error(what) {}
 };
 
@@ -59,7 +61,8 @@ positive definite matrices, or on input that is numerically degenerate.
 class Solver_failure_error : public Direction_field_error
 {
 public:
-  /// constructs the exception with the message `what`.
+  /// constructs the exception.
+  /// \param what the message, naming the problem
   explicit Solver_failure_error(const std::string& what) : Direction_field_error(what) {}
 };
 

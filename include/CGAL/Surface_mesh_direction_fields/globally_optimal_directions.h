@@ -129,11 +129,11 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
 \tparam VertexDirectionMap a model of `WritablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
         `GT::Vector_3` as value type
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\tparam NamedParameters a sequence of <a href="https://doc.cgal.org/5.5.1/BGL/group__bgl__namedparameters.html">Named Parameters</a>
 
 \param tmesh the input triangle mesh; it is not modified
 \param vertex_direction_map the property map receiving a unit tangent direction per vertex
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
+\param np an optional sequence of <a href="https://doc.cgal.org/5.5.1/BGL/group__bgl__namedparameters.html">Named Parameters</a> among the ones
        listed below; `GT` stands for the type of the object given to `geom_traits()`
 
 \cgalNamedParamsBegin

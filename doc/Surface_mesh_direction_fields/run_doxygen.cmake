@@ -1,0 +1,12 @@
+# Runs Doxygen and fails when it printed any warning (also into its log file).
+file(REMOVE ${LOG})
+execute_process(COMMAND ${DOXYGEN} ${DOXYFILE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(warnings "")
+if(EXISTS ${LOG})
+  file(READ ${LOG} warnings)
+endif()
+string(STRIP "${warnings}${err}" all)
+if(NOT rc EQUAL 0 OR NOT all STREQUAL "")
+  message(FATAL_ERROR "Doxygen failed or warned (status ${rc}):\n${all}")
+endif()
+message(STATUS "Doxygen: no warning")

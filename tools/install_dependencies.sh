@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs, only those that are missing.
+#   usage: install_dependencies.sh [main|tests]
+set -euo pipefail
+packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev)
+if [ "${1:-main}" = tests ]; then
+  packages+=(doxygen python3)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" > /dev/null
+fi
