@@ -11,8 +11,13 @@
 //  * the documented errors on bad input, with the input left untouched;
 //  * determinism for a seed, and the optional outputs.
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <boost/property_map/property_map.hpp>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -23,6 +28,7 @@
 #include <cmath>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <limits>
 #include <string>
 #include <utility>
@@ -341,9 +347,55 @@ static void check_components_and_outputs(Test_report& report)
   report.check(worst < 1e-9, "orthogonal to the normals given by vertex_normal_map");
 }
 
+// Another mesh model and another factorization give the same field.
+static void check_models_and_solvers(Test_report& report)
+{
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Vector_3 p = mesh.point(v) - CGAL::ORIGIN;
+    mesh.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x()) * std::cos(2. * p.y() + p.z())) * p;
+  }
+  auto dir = direction_map(mesh);
+  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(4));
+
+  // Polyhedron_3 (no vertex ids: the index maps are made internally)
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+  typedef CGAL::Polyhedron_3<Epick> Polyhedron;
+  Polyhedron poly;
+  CGAL::copy_face_graph(mesh, poly);
+  std::map<Polyhedron::Vertex_handle, Epick::Vector_3> poly_dir_storage;
+  auto poly_dir = boost::make_assoc_property_map(poly_dir_storage);
+  Singularities sing;
+  std::vector<std::pair<Polyhedron::Facet_handle, int> > poly_sing;
+  const SMDF::Direction_field_result rp = SMDF::compute_globally_optimal_directions(
+    poly, poly_dir, params::degree(4).singularities_output_iterator(std::back_inserter(poly_sing)));
+  report.check(std::abs(rp.components[0].eigenvalue - r.components[0].eigenvalue) <= 1e-9 * r.components[0].eigenvalue &&
+               rp.index_sum == r.index_sum && rp.number_of_singular_faces == r.number_of_singular_faces &&
+               poly_sing.size() == rp.number_of_singular_faces && poly_dir_storage.size() == poly.size_of_vertices(),
+               "Polyhedron_3 gives the same eigenvalue and singularities as Surface_mesh");
+
+  // Another sparse solver: Eigen's simplicial LL^T.
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<std::complex<double> > > > LLT;
+  auto dir2 = mesh.add_property_map<Vertex_index, Vector_3>("v:direction_llt", CGAL::NULL_VECTOR).first;
+  const SMDF::Direction_field_result rl = SMDF::compute_globally_optimal_directions(
+    mesh, dir2, params::degree(4).sparse_linear_solver(LLT()));
+  double worst = 0.;
+  for(Vertex_index v : mesh.vertices())
+  {
+    // same seed, same field up to the solver's rounding; compare the crosses (mod 90 degrees)
+    const double c = dir[v] * dir2[v], s = std::sqrt(CGAL::cross_product(dir[v], dir2[v]).squared_length());
+    worst = (std::max)(worst, std::abs(std::remainder(4. * std::atan2(s, c), 2. * CGAL_PI)) / 4.);
+  }
+  report.check(std::abs(rl.components[0].eigenvalue - r.components[0].eigenvalue) <= 1e-10 * r.components[0].eigenvalue &&
+               worst < 1e-6, "sparse_linear_solver(SimplicialLLT) gives the same field (" + std::to_string(worst) + " rad)");
+}
+
 int main()
 {
   Test_report report("fields");
+  check_models_and_solvers(report);
 
   Mesh sphere, torus;
   make_icosphere(sphere, 4);
