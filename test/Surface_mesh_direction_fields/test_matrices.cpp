@@ -175,7 +175,7 @@ static void check_local_matrices_by_quadrature(Test_report& report)
         const Complex rij = std::polar(1., 0.7), rjk = std::polar(1., -1.9);
         con.transport = {rij, rjk, std::exp(I * omega) / (rij * rjk)};
         con.holonomy = {omega};
-        const SI::Local_matrices lm = SI::local_matrices(m, ts, con, 0, s);
+        const SI::Local_matrices lm = SI::local_matrices(ts, con, 0, s);
         Eigen::Matrix3cd A_closed = Eigen::Matrix3cd::Zero(), M_closed = Eigen::Matrix3cd::Zero();
         for(int c = 0; c < 3; ++c)
         {

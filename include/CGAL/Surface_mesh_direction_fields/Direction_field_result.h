@@ -96,6 +96,8 @@ struct Direction_field_result
   double residual = 0.;
   /// `true` if every component converged
   bool converged = true;
+  /// the length added to every edge by the intrinsic mollification (0 if the mesh needed none)
+  double mollification = 0.;
   /// wall-clock times
   Direction_field_timings timings;
 };

@@ -40,8 +40,9 @@ public:
 
 Thrown when the input mesh or a parameter does not meet the documented
 requirements: an empty mesh, a non-triangle face, a non-manifold vertex, a
-degenerate (zero-area) face, a non-finite coordinate, a degree `n < 1`, or a
-smoothness parameter `s` outside `[-1, 1]`. The input is left untouched.
+non-finite coordinate, a degenerate (zero-area) face when the intrinsic
+mollification is switched off, a degree `n < 1`, or a smoothness parameter
+`s` outside `[-1, 1]`. The input is left untouched.
 */
 class Invalid_input_error : public Direction_field_error
 {

@@ -164,6 +164,18 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                    as key type and `double` (or `GT::FT`) as value type}
     \cgalParamDefault{no output}
   \cgalParamNEnd
+  \cgalParamNBegin{intrinsic_mollification}
+    \cgalParamDescription{the relative margin \f$ \delta \f$ of the intrinsic mollification of degenerate
+                          triangles: if some face violates \f$ \ell_a + \ell_b - \ell_c \ge \delta \bar\ell \f$
+                          (\f$ \bar\ell \f$ the mean edge length), the smallest length that restores it everywhere
+                          is added to every edge length, and the computation uses these lengths (Sharp and Crane,
+                          2020). Faces with zero area, coincident vertices or collinear vertices then get finite
+                          matrices. A mesh with no such face is not changed at all. `0` switches it off; zero-area
+                          faces are then rejected.}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1e-6`}
+    \cgalParamExtra{The length added is reported in `Direction_field_result::mollification`.}
+  \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -229,8 +241,9 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
 \returns a `Direction_field_result`: per component, the smallest eigenvalue, the iterations used,
 the final residual, the Euler characteristic and the index sum; and the timings.
 
-\throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex, a
-        zero-area face or a non-finite coordinate, if `n < 1`, or if `s` is outside \f$ [-1, 1] \f$.
+\throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex or a
+        non-finite coordinate, a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, or if
+        `s` is outside \f$ [-1, 1] \f$.
         Nothing is written to the output maps then.
 \throws Solver_failure_error if the sparse solver fails to factor the shifted energy matrix.
 
@@ -277,12 +290,16 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
   options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   if(!(options.residual_tolerance >= 0.))
     throw Invalid_input_error("the residual tolerance must be non-negative");
+  const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
+  if(!(mollification >= 0.) || !std::isfinite(mollification))
+    throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
 
   // --- setup: mesh plumbing, tangent spaces, connection, matrices
   const internal::Point_to_array<Geom_traits> to_array{gt};
   const internal::Indexed_mesh mesh = internal::make_indexed_mesh(
     tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
-  const internal::Tangent_spaces ts = internal::compute_tangent_spaces(mesh);
+  const internal::Tangent_spaces ts = internal::compute_tangent_spaces(mesh, mollification);
+  result.mollification = ts.mollification;
   const internal::Connection connection = internal::compute_connection(mesh, ts, result.degree);
   const internal::Components components = internal::split_into_components(mesh);
 

@@ -17,7 +17,6 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <Eigen/Sparse>
 
@@ -96,11 +95,9 @@ struct Local_matrices
 };
 
 // The local matrices of face f for the energy E_s (s in [-1, 1]).
-inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts,
-                                     const Connection& con, std::size_t f, double s)
+inline Local_matrices local_matrices(const Tangent_spaces& ts, const Connection& con, std::size_t f, double s)
 {
   Local_matrices lm;
-  const auto& t = m.faces[f];
   const double area = ts.face_area[f];
   const double omega = con.holonomy[f];
   // conjugated kernels: see the note on placement and conjugation above
@@ -110,11 +107,12 @@ inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces
   const Complex I(0., 1.);
   for(int c = 0; c < 3; ++c)
   {
-    const Vec3& pi = m.points[t[c]];
-    const Vec3 p_ij = m.points[t[(c + 1) % 3]] - pi;
-    const Vec3 p_ik = m.points[t[(c + 2) % 3]] - pi;
-    const Vec3 p_jk = p_ik - p_ij;
-    const double g11 = squared_norm(p_ij), g22 = squared_norm(p_ik), g12 = dot(p_ij, p_ik);
+    // Intrinsic: the sides from i = t[c] to j = t[c+1] and k = t[c+2], and the
+    // opposite side j -> k, from the (possibly mollified) edge lengths.
+    const double l_ij = ts.side_length[3 * f + c];
+    const double l_jk = ts.side_length[3 * f + (c + 1) % 3];
+    const double l_ki = ts.side_length[3 * f + (c + 2) % 3];
+    const double g11 = l_ij * l_ij, g22 = l_ki * l_ki, g12 = ts.corner_dot[3 * f + c];
     const Complex r_jk = con.transport[3 * f + (c + 1) % 3];  // j -> k runs counter-clockwise
 
     const Complex dirichlet = (r_jk / area) * ((g11 + g22) * f1 + g12 * f2);
@@ -125,7 +123,7 @@ inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces
     lm.energy_pair[c] = dirichlet - s * ((omega / area) * mass + 0.5 * I * r_jk);
 
     const double dirichlet_diagonal =
-      (squared_norm(p_jk) + omega * omega * (g11 + g12 + g22) / 90.) / (4. * area);
+      (l_jk * l_jk + omega * omega * (g11 + g12 + g22) / 90.) / (4. * area);
     lm.mass_diagonal[c] = area / 6.;
     lm.energy_diagonal[c] = dirichlet_diagonal - s * omega / 6.;  // (Omega/|t|) * |t|/6
   }
@@ -149,7 +147,7 @@ inline Energy_and_mass assemble_energy_and_mass(const Indexed_mesh& m, const Tan
   b.reserve(9 * comp.faces.size());
   for(std::size_t f : comp.faces)
   {
-    const Local_matrices lm = local_matrices(m, ts, con, f, s);
+    const Local_matrices lm = local_matrices(ts, con, f, s);
     const auto& t = m.faces[f];
     for(int c = 0; c < 3; ++c)
     {

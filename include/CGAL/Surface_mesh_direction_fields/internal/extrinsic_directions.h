@@ -46,31 +46,33 @@ inline std::vector<Vec3> angle_weighted_vertex_normals(const Indexed_mesh& m, co
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
   {
     const auto& t = m.faces[f];
-    Vec3 nf = cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]);
-    nf = (1. / norm(nf)) * nf;  // faces have positive area (checked)
+    const Vec3 nf = normalized(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+    // (a degenerate face, mollified, has no normal and adds nothing)
     for(int c = 0; c < 3; ++c)
       normals[t[c]] = normals[t[c]] + ts.corner_angle[3 * f + c] * nf;
   }
   for(Vec3& nv : normals)
-  {
-    const double l = norm(nv);
-    if(l > 0.) nv = (1. / l) * nv;
-  }
+    nv = normalized(nv);
   return normals;
 }
 
 // Unit vector in the plane of corner `corner`, at Euclidean angle `psi` from
-// its first side, turning towards its second side.
-inline Vec3 vector_in_corner(const Indexed_mesh& m, std::size_t corner, double psi)
+// its first side, turning towards its second side. In a face that is
+// degenerate in 3D (its sides parallel or of zero length: only possible with
+// mollification), the turn is taken about the vertex normal instead.
+inline Vec3 vector_in_corner(const Indexed_mesh& m, std::size_t corner, double psi, const Vec3& normal)
 {
   const auto& t = m.faces[corner / 3];
   const int c = static_cast<int>(corner % 3);
   const Vec3& p = m.points[t[c]];
   const Vec3 e1 = m.points[t[(c + 1) % 3]] - p;
   const Vec3 e2 = m.points[t[(c + 2) % 3]] - p;
-  const Vec3 x = (1. / norm(e1)) * e1;
+  Vec3 x = normalized(e1);
+  if(norm(x) == 0.) x = normalized(e2);
   Vec3 y = e2 - dot(e2, x) * x;
-  y = (1. / norm(y)) * y;
+  if(!(norm(y) > 1e-12 * norm(e2)))
+    y = cross(normal, x);
+  y = normalized(y);
   return std::cos(psi) * x + std::sin(psi) * y;
 }
 
@@ -100,28 +102,36 @@ inline Vec3 tangent_direction(const Indexed_mesh& m, const Tangent_spaces& ts, s
         const double past_end = phi - (theta0 + width);
         const double before_start = two_pi - phi;
         if(before_start < past_end)
-          w = vector_in_corner(m, m.fan_corners[begin], -before_start);
+          w = vector_in_corner(m, m.fan_corners[begin], -before_start, normal);
         else
-          w = vector_in_corner(m, corner, ts.corner_angle[corner] + past_end);
+          w = vector_in_corner(m, corner, ts.corner_angle[corner] + past_end, normal);
       }
       else
-        w = vector_in_corner(m, corner, (phi - theta0) / s);
+        w = vector_in_corner(m, corner, (phi - theta0) / s, normal);
       placed = true;
     }
   }
 
   Vec3 projected = w - dot(w, normal) * normal;
-  double l = norm(projected);
-  if(!(l > 1e-8))
+  if(!(norm(projected) > 1e-8))
   {
     // The in-face vector is (nearly) parallel to the normal: fall back to the
-    // projected reference direction, which is never parallel to it in practice.
-    const std::size_t corner = m.fan_corners[begin];
-    const Vec3 e = m.points[m.faces[corner / 3][(corner % 3 + 1) % 3]] - m.points[v];
-    projected = e - dot(e, normal) * normal;
-    l = norm(projected);
+    // projected sides of the fan, the first one that is not.
+    for(std::size_t k = begin; k < end && !(norm(projected) > 1e-8); ++k)
+    {
+      const std::size_t corner = m.fan_corners[k];
+      const Vec3 e = normalized(m.points[m.faces[corner / 3][(corner % 3 + 1) % 3]] - m.points[v]);
+      projected = e - dot(e, normal) * normal;
+    }
+    if(!(norm(projected) > 1e-8))
+    {
+      // every side is parallel to the normal (or of zero length): any tangent vector
+      const Vec3 axis = std::abs(normal[0]) < 0.9 ? Vec3{1., 0., 0.} : Vec3{0., 1., 0.};
+      projected = cross(normal, axis);
+      if(!(norm(projected) > 0.)) projected = axis;  // no normal at all
+    }
   }
-  return (1. / l) * projected;
+  return normalized(projected);
 }
 
 } // namespace internal

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <complex>
 #include <string>
 #include <vector>
@@ -38,43 +39,105 @@ struct Tangent_spaces
   std::vector<double> angle_scale;        // s_i = 2 pi / (angle sum) inside, 1 on the boundary
   std::vector<double> corner_angle;       // Euclidean angle alpha of corner 3f+c
   std::vector<double> corner_theta;       // theta_i(i -> j) of the corner's first side, i = faces[f][c], j = faces[f][c+1]
+  std::vector<double> side_length;        // length of the corner's first side, faces[f][c] -> faces[f][c+1]
+  std::vector<double> corner_dot;         // <p_ij, p_ik>: scalar product of the corner's two sides
   std::vector<double> face_area;          // |t|
   std::vector<double> face_angle_defect;  // kappa_t = sum of the rescaled corner angles - pi
+  double mollification = 0.;              // the length added to every edge (0: none was needed)
 };
 
-// Euclidean corner angles and areas. A face whose area is zero, or zero up to
-// rounding (below 1e-14 times its longest edge squared, i.e. an angle sine
-// below about 1e-14), is rejected: its matrices are undefined.
-inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_spaces& ts)
+// The geometry is intrinsic: everything downstream of the mesh indexing uses
+// edge lengths only (angles by the law of cosines, areas by Heron's formula).
+// This is what makes the degenerate-triangle fix below possible.
+//
+// Intrinsic mollification (after Sharp and Crane, "A Laplacian for nonmanifold
+// triangle meshes", 2020): with delta = relative_delta * (mean edge length),
+// the smallest epsilon >= 0 is added to every edge length so that each face
+// satisfies the triangle inequalities with margin delta:
+//     l_a + l_b - l_c >= delta  for every corner.
+// A mesh whose faces already have that margin is left exactly as it is; a
+// mesh with zero-area or needle/cap faces gets a uniform, tiny change of all
+// lengths (about relative_delta relative) instead of infinite cotangents.
+// With relative_delta = 0 there is no mollification, and a face whose area is
+// zero up to rounding (below 1e-14 times its longest edge squared) is rejected.
+inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_spaces& ts,
+                                            double relative_delta = 0.)
 {
   const std::size_t nf = m.number_of_faces();
+  ts.side_length.resize(3 * nf);
   ts.corner_angle.resize(3 * nf);
   ts.face_area.resize(nf);
+  double total_length = 0.;
   for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& t = m.faces[f];
     for(int c = 0; c < 3; ++c)
     {
-      const Vec3& p = m.points[t[c]];
-      const Vec3 e1 = m.points[t[(c + 1) % 3]] - p;
-      const Vec3 e2 = m.points[t[(c + 2) % 3]] - p;
-      ts.corner_angle[3 * f + c] = std::atan2(norm(cross(e1, e2)), dot(e1, e2));
+      ts.side_length[3 * f + c] = norm(m.points[m.faces[f][(c + 1) % 3]] - m.points[m.faces[f][c]]);
+      total_length += ts.side_length[3 * f + c];
     }
-    const Vec3& p0 = m.points[t[0]];
-    const double area = 0.5 * norm(cross(m.points[t[1]] - p0, m.points[t[2]] - p0));
+
+  ts.mollification = 0.;
+  if(relative_delta > 0. && nf > 0)
+  {
+    const double delta = relative_delta * total_length / (3. * nf);
+    double epsilon = 0.;
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int c = 0; c < 3; ++c)
+      {
+        const double a = ts.side_length[3 * f + c], b = ts.side_length[3 * f + (c + 1) % 3],
+                     o = ts.side_length[3 * f + (c + 2) % 3];
+        epsilon = (std::max)(epsilon, delta - (a + b - o));
+      }
+    if(epsilon > 0.)
+    {
+      ts.mollification = epsilon;
+      for(double& l : ts.side_length) l += epsilon;
+    }
+  }
+
+  // Areas and scalar products: from the 3D vectors when the lengths are the
+  // embedded ones (accurate for slivers), from the lengths when they were
+  // mollified (Heron's formula in Kahan's stable form).
+  ts.corner_dot.resize(3 * nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const double* l = &ts.side_length[3 * f];
+    double area;
+    if(ts.mollification == 0.)
+    {
+      const auto& t = m.faces[f];
+      area = 0.5 * norm(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+      for(int c = 0; c < 3; ++c)
+        ts.corner_dot[3 * f + c] = dot(m.points[t[(c + 1) % 3]] - m.points[t[c]], m.points[t[(c + 2) % 3]] - m.points[t[c]]);
+    }
+    else
+    {
+      double x = l[0], y = l[1], z = l[2];  // sorted x >= y >= z
+      if(x < y) std::swap(x, y);
+      if(y < z) std::swap(y, z);
+      if(x < y) std::swap(x, y);
+      const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+      area = 0.25 * std::sqrt((std::max)(0., product));
+      for(int c = 0; c < 3; ++c)
+      {
+        // corner c lies between its first side l[c] and the side l[c+2]; l[c+1] is opposite
+        const double a = l[c], b = l[(c + 2) % 3], o = l[(c + 1) % 3];
+        ts.corner_dot[3 * f + c] = 0.5 * (a * a + b * b - o * o);
+      }
+    }
     ts.face_area[f] = area;
-    const double longest = (std::max)({squared_norm(m.points[t[1]] - p0), squared_norm(m.points[t[2]] - p0),
-                                       squared_norm(m.points[t[2]] - m.points[t[1]])});
-    if(!(area > 1e-14 * longest) || !std::isfinite(area))
+    const double longest = (std::max)({l[0], l[1], l[2]});
+    if(!(area > 1e-14 * longest * longest) || !std::isfinite(area))
       throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
+    for(int c = 0; c < 3; ++c)
+      ts.corner_angle[3 * f + c] = std::atan2(2. * area, ts.corner_dot[3 * f + c]);
   }
 }
 
-inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m)
+inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relative_mollification = 0.)
 {
   const double two_pi = 2. * CGAL_PI;
   Tangent_spaces ts;
-  compute_corner_angles_and_areas(m, ts);
+  compute_corner_angles_and_areas(m, ts, relative_mollification);
 
   const std::size_t nv = m.number_of_vertices();
   ts.angle_scale.assign(nv, 1.);
