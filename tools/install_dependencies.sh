@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev)
 if [ "${1:-main}" = tests ]; then
-  packages+=(doxygen python3)
+  packages+=(doxygen python3 libopenmesh-dev)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,313 @@
+// Any CGAL mesh, any input:
+//  * mesh models: Surface_mesh with Epick and with Epeck, Polyhedron_3 with and
+//    without item ids, points in a separate property map, outputs into
+//    std::vector-backed and associative property maps; a minimal traits class
+//    (the DirectionFieldTraits_3 concept, nothing more) compiles and agrees;
+//  * hard meshes: zero-area, collinear and needle faces, coincident vertices,
+//    angles down to 1e-3 degrees, boundary vertices with tiny and huge angle
+//    sums, many boundary loops: no NaN, unit tangent outputs, Poincare-Hopf on
+//    every closed component;
+//  * the input mesh and its property maps are never modified.
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+
+#include "generated_meshes.h"
+#include "test_support.h"
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace params = CGAL::parameters;
+
+// Exactly the requirements of the concept DirectionFieldTraits_3.
+struct Minimal_traits
+{
+  typedef double FT;
+  typedef Kernel::Point_3 Point_3;
+  typedef Kernel::Vector_3 Vector_3;
+  struct Compute_x_3
+  {
+    FT operator()(const Point_3& p) const { return p.x(); }
+    FT operator()(const Vector_3& v) const { return v.x(); }
+  };
+  struct Compute_y_3
+  {
+    FT operator()(const Point_3& p) const { return p.y(); }
+    FT operator()(const Vector_3& v) const { return v.y(); }
+  };
+  struct Compute_z_3
+  {
+    FT operator()(const Point_3& p) const { return p.z(); }
+    FT operator()(const Vector_3& v) const { return v.z(); }
+  };
+  struct Construct_vector_3
+  {
+    Vector_3 operator()(FT x, FT y, FT z) const { return Vector_3(x, y, z); }
+  };
+  Compute_x_3 compute_x_3_object() const { return Compute_x_3(); }
+  Compute_y_3 compute_y_3_object() const { return Compute_y_3(); }
+  Compute_z_3 compute_z_3_object() const { return Compute_z_3(); }
+  Construct_vector_3 construct_vector_3_object() const { return Construct_vector_3(); }
+};
+
+// A surface without symmetry, so that its smallest eigenvalue is simple.
+static void make_lumpy_sphere(Mesh& mesh, int subdivisions)
+{
+  make_icosphere(mesh, subdivisions);
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Vector_3 p = mesh.point(v) - CGAL::ORIGIN;
+    mesh.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 0.4) * std::cos(2. * p.y() + p.z())) * p;
+  }
+}
+
+static double angle_mod(const Vector_3& a, const Vector_3& b, int n)  // angle between n-directions
+{
+  const double c = a * b, s = std::sqrt(CGAL::cross_product(a, b).squared_length());
+  return std::abs(std::remainder(n * std::atan2(s, c), 2. * CGAL_PI)) / n;
+}
+
+static void check_models(Test_report& report)
+{
+  Mesh mesh;
+  make_lumpy_sphere(mesh, 3);
+  auto dir = mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
+  auto magnitude = mesh.add_property_map<Vertex_index, double>("v:magnitude", 0.).first;
+  std::vector<std::pair<Face_index, int> > singularities;
+  const SMDF::Direction_field_result ref = SMDF::compute_globally_optimal_directions(
+    mesh, dir, params::degree(3).vertex_magnitude_map(magnitude).singularities_output_iterator(std::back_inserter(singularities)));
+  const double lambda = ref.components[0].eigenvalue;
+  auto same_field = [&](auto get_direction) {
+    double worst = 0.;
+    for(Vertex_index v : mesh.vertices())
+    {
+      const auto d = get_direction(v);
+      worst = (std::max)(worst, angle_mod(dir[v], Vector_3(CGAL::to_double(d.x()), CGAL::to_double(d.y()),
+                                                            CGAL::to_double(d.z())), 3));
+    }
+    return worst < 1e-9;
+  };
+
+  { // Epeck. The vertex order is kept but the halfedges differ, so the
+    // reference directions and hence the global phase of the eigenvector may
+    // differ: compare what does not depend on it (magnitudes, singularities).
+    typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+    typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+    Exact_mesh exact;
+    std::map<Vertex_index, Exact_mesh::Vertex_index> v2v;
+    CGAL::copy_face_graph(mesh, exact, params::vertex_to_vertex_output_iterator(std::inserter(v2v, v2v.end())));
+    auto edir = exact.add_property_map<Exact_mesh::Vertex_index, Epeck::Vector_3>("v:d").first;
+    std::vector<double> emag(num_vertices(exact));
+    std::vector<std::pair<Exact_mesh::Face_index, int> > esing;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      exact, edir, params::degree(3).singularities_output_iterator(std::back_inserter(esing))
+                     .vertex_magnitude_map(boost::make_iterator_property_map(emag.begin(), get(CGAL::vertex_index, exact))));
+    report.check(std::abs(r.components[0].eigenvalue - lambda) <= 1e-12 * lambda, "Epeck: same eigenvalue");
+    double worst = 0.;
+    for(Vertex_index v : mesh.vertices()) worst = (std::max)(worst, std::abs(emag[std::size_t(v2v[v])] - magnitude[v]));
+    report.check(worst < 1e-8 && esing.size() == singularities.size() && r.index_sum == ref.index_sum,
+                 "Epeck: same magnitudes and singularities (" + std::to_string(worst) + ")");
+    bool unit = true;
+    for(auto v : exact.vertices())
+      unit = unit && std::abs(CGAL::to_double(edir[v].squared_length()) - 1.) < 1e-12;
+    report.check(unit, "Epeck: unit outputs");
+  }
+  { // Polyhedron_3 with item ids, given as index maps
+    typedef CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3> Polyhedron;
+    Polyhedron poly;
+    std::map<Vertex_index, Polyhedron::Vertex_handle> v2v;
+    CGAL::copy_face_graph(mesh, poly, params::vertex_to_vertex_output_iterator(std::inserter(v2v, v2v.end())));
+    std::size_t i = 0;
+    for(auto v : vertices(poly)) v->id() = i++;
+    i = 0;
+    for(auto f : faces(poly)) f->id() = i++;
+    std::vector<Vector_3> pdir(num_vertices(poly));
+    auto pdir_map = boost::make_iterator_property_map(pdir.begin(), get(CGAL::vertex_index, poly));
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      poly, pdir_map, params::degree(3).vertex_index_map(get(CGAL::vertex_index, poly))
+                                      .face_index_map(get(CGAL::face_index, poly)));
+    report.check(std::abs(r.components[0].eigenvalue - lambda) <= 1e-12 * lambda &&
+                 r.index_sum == ref.index_sum, "Polyhedron_3 with ids, std::vector output: same eigenvalue");
+    std::vector<double> pmag(num_vertices(poly));
+    SMDF::compute_globally_optimal_directions(
+      poly, pdir_map, params::degree(3).vertex_index_map(get(CGAL::vertex_index, poly))
+                                      .face_index_map(get(CGAL::face_index, poly))
+                                      .vertex_magnitude_map(boost::make_iterator_property_map(pmag.begin(), get(CGAL::vertex_index, poly))));
+    double worst = 0.;
+    for(Vertex_index v : mesh.vertices()) worst = (std::max)(worst, std::abs(pmag[v2v[v]->id()] - magnitude[v]));
+    report.check(worst < 1e-8, "Polyhedron_3 with ids: same magnitudes (" + std::to_string(worst) + ")");
+  }
+  { // Polyhedron_3 without ids, associative output
+    typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+    Polyhedron poly;
+    CGAL::copy_face_graph(mesh, poly);
+    std::map<Polyhedron::Vertex_handle, Vector_3> storage;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      poly, boost::make_assoc_property_map(storage), params::degree(3));
+    report.check(std::abs(r.components[0].eigenvalue - lambda) <= 1e-12 * lambda && storage.size() == num_vertices(mesh),
+                 "Polyhedron_3 without ids, associative output: same eigenvalue");
+  }
+  { // points in a separate property map; the mesh's own points are garbage
+    Mesh garbage = mesh;
+    std::vector<Point_3> points(num_vertices(mesh));
+    for(Vertex_index v : mesh.vertices()) { points[v] = mesh.point(v); garbage.point(v) = Point_3(0, 0, 0); }
+    auto gdir = garbage.add_property_map<Vertex_index, Vector_3>("v:d").first;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      garbage, gdir, params::degree(3).vertex_point_map(
+        boost::make_iterator_property_map(points.begin(), get(CGAL::vertex_index, garbage))));
+    report.check(std::abs(r.components[0].eigenvalue - lambda) <= 1e-12 * lambda, "vertex_point_map: same eigenvalue");
+    report.check(same_field([&](Vertex_index v) { return gdir[v]; }), "vertex_point_map: same field");
+  }
+  { // the minimal traits class
+    auto mdir = mesh.add_property_map<Vertex_index, Vector_3>("v:minimal", CGAL::NULL_VECTOR).first;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      mesh, mdir, params::degree(3).geom_traits(Minimal_traits()));
+    report.check(r.components[0].eigenvalue == lambda && same_field([&](Vertex_index v) { return mdir[v]; }),
+                 "a minimal model of DirectionFieldTraits_3 gives the same field");
+  }
+}
+
+// No NaN, unit tangent outputs, Poincare-Hopf per closed component, and the
+// input left as it was.
+static void check_hard_mesh(Test_report& report, const std::string& name, Mesh& mesh, bool expect_mollification)
+{
+  const Mesh before = mesh;
+  for(int n : {1, 2, 4})
+  {
+    auto dir = mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
+    auto magnitude = mesh.add_property_map<Vertex_index, double>("v:magnitude", -1.).first;
+    SMDF::Direction_field_result r;
+    try
+    {
+      r = SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(n).vertex_magnitude_map(magnitude));
+    }
+    catch(const std::exception& e)
+    {
+      report.check(false, name + ": unexpected exception: " + e.what());
+      continue;
+    }
+    bool ok = true;
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Vector_3 d = dir[v];
+      if(mesh.is_isolated(v)) { ok = ok && d == CGAL::NULL_VECTOR; continue; }
+      ok = ok && std::isfinite(d.x()) && std::isfinite(d.y()) && std::isfinite(d.z()) &&
+           std::abs(d.squared_length() - 1.) < 1e-12 && std::isfinite(magnitude[v]);
+    }
+    report.check(ok, name + ": finite unit outputs, n = " + std::to_string(n));
+    bool poincare_hopf = true, finite = true;
+    for(const auto& c : r.components)
+    {
+      finite = finite && std::isfinite(c.eigenvalue) && std::isfinite(c.residual);
+      if(c.is_closed) poincare_hopf = poincare_hopf && c.index_sum == n * c.euler_characteristic;
+    }
+    report.check(finite, name + ": finite eigenvalues and residuals, n = " + std::to_string(n));
+    report.check(poincare_hopf, name + ": Poincare-Hopf on every closed component, n = " + std::to_string(n));
+    report.check((r.mollification > 0.) == expect_mollification,
+                 name + (expect_mollification ? ": mollified" : ": not mollified") + " (" + std::to_string(r.mollification) + ")");
+    mesh.remove_property_map(dir);
+    mesh.remove_property_map(magnitude);
+  }
+  bool same = mesh.number_of_vertices() == before.number_of_vertices() && mesh.number_of_faces() == before.number_of_faces();
+  for(Vertex_index v : mesh.vertices()) same = same && mesh.point(v) == before.point(v);
+  for(Face_index f : mesh.faces()) same = same && mesh.halfedge(f) == before.halfedge(f);
+  report.check(same, name + ": the mesh is not modified");
+}
+
+static void check_hard_meshes(Test_report& report)
+{
+  { // a vertex moved exactly onto an edge's midpoint: a zero-area face in a closed mesh
+    Mesh m;
+    make_icosphere(m, 2);
+    auto h = m.halfedge(Face_index(10));
+    m.point(m.target(m.next(h))) = CGAL::midpoint(m.point(m.source(h)), m.point(m.target(h)));
+    check_hard_mesh(report, "collinear face", m, true);
+  }
+  { // two vertices at the same position: a zero-length edge, two zero-area faces
+    Mesh m;
+    make_icosphere(m, 2);
+    auto h = m.halfedge(Face_index(3));
+    m.point(m.target(h)) = m.point(m.source(h));
+    check_hard_mesh(report, "coincident vertices", m, true);
+  }
+  { // slivers with angles down to 1e-3 degrees (no mollification needed)
+    Mesh m;
+    make_disk(m, 6);
+    const double tiny = 1e-3 * CGAL_PI / 180.;
+    // a fan of thin triangles around an extra vertex on the rim
+    std::vector<Vertex_index> rim;
+    for(int k = 0; k <= 8; ++k)
+      rim.push_back(m.add_vertex(Point_3(3. + std::cos(k * tiny), std::sin(k * tiny), 0.)));
+    const Vertex_index apex = m.add_vertex(Point_3(3., 0., 0.));
+    for(int k = 0; k < 8; ++k) m.add_face(apex, rim[k], rim[k + 1]);
+    check_hard_mesh(report, "1e-3 degree slivers", m, false);
+  }
+  { // boundary vertices with tiny and huge angle sums: a thin spike and a pleated fan
+    Mesh m;
+    const Vertex_index c = m.add_vertex(Point_3(0, 0, 0));
+    std::vector<Vertex_index> ring;
+    const int k = 24;  // 24 corners of ~25 degrees zig-zagging: angle sum ~ 600 degrees
+    for(int i = 0; i <= k; ++i)
+    {
+      const double a = 1.9 * CGAL_PI * i / k;
+      ring.push_back(m.add_vertex(Point_3(std::cos(a), std::sin(a), (i % 2) ? 0.8 : -0.8)));
+    }
+    for(int i = 0; i < k; ++i) m.add_face(c, ring[i], ring[i + 1]);
+    const Vertex_index spike = m.add_vertex(Point_3(40., 0.2, 0.));  // ~0.3 degree boundary corner
+    m.add_face(ring[0], spike, ring[1]);
+    check_hard_mesh(report, "tiny and huge boundary angle sums", m, false);
+  }
+  { // many boundary loops, several components, an isolated vertex
+    Mesh m;
+    make_torus(m, 2., 0.7, 40, 16);
+    std::vector<Face_index> holes;
+    for(Face_index f : m.faces())
+      if(std::size_t(f) % 37 == 0) holes.push_back(f);
+    for(Face_index f : holes) CGAL::Euler::remove_face(m.halfedge(f), m);
+    m.collect_garbage();
+    Mesh sphere;
+    make_icosphere(sphere, 2);
+    for(Vertex_index v : sphere.vertices()) sphere.point(v) = sphere.point(v) + Vector_3(6, 0, 0);
+    CGAL::copy_face_graph(sphere, m);
+    m.add_vertex(Point_3(-9, -9, -9));
+    check_hard_mesh(report, "many holes, two components, isolated vertex", m, false);
+  }
+  for(const char* name : {"blade.off", "plane_holes.off", "bones.off"})
+  {
+    const std::string path = shared_mesh_path(name);
+    Mesh m;
+    if(!path.empty() && report.check(CGAL::IO::read_polygon_mesh(path, m), std::string("read ") + name))
+      check_hard_mesh(report, name, m, false);
+  }
+}
+
+int main()
+{
+  Test_report report("robustness");
+  check_models(report);
+  check_hard_meshes(report);
+  return report.finish();
+}
