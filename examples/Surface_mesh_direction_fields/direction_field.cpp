@@ -4,8 +4,11 @@
 //                   [--singularities FILE] [--json] [--png FILE]
 //                   [--json-file FILE] [--seed N] [--max-iterations N] [--tolerance T]
 //
-// Computes the globally smoothest n-direction field of a triangle mesh (OFF,
-// OBJ, PLY or STL) and its singular faces. With no MESH, CGAL's fandisk
+// Computes the globally smoothest n-direction field of a mesh (OFF, OBJ, PLY
+// or STL) and its singular faces. The file is read as a polygon soup and
+// repaired if needed (read_and_repair_mesh.h: duplicate points merged,
+// polygons triangulated, orientation made consistent, non-manifold vertices
+// duplicated); the summary says what was changed. With no MESH, CGAL's fandisk
 // (Debian package libcgal-demo) is used. The contract of the first six
 // options is relied upon by other programs: it is only ever extended.
 //
@@ -27,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "png_snapshot.h"
+#include "read_and_repair_mesh.h"
 
 #include <chrono>
 #include <cstdio>
@@ -34,6 +38,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -111,42 +116,6 @@ Options parse_options(int argc, char** argv)
   return o;
 }
 
-// Reads the file as a polygon soup and builds the mesh vertex by vertex and face
-// by face, so that vertex i and face f of the mesh are vertex i and face f of
-// the file (isolated vertices included).
-void read_triangle_mesh(const std::string& path, Mesh& mesh)
-{
-  {
-    std::ifstream probe(path);
-    if(!probe) throw Usage_error("cannot open '" + path + "'");
-  }
-  std::vector<Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    throw Usage_error("cannot read '" + path + "' as a mesh (OFF, OBJ, PLY or STL)");
-  for(const Point_3& p : points) mesh.add_vertex(p);
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    const auto& poly = polygons[f];
-    if(poly.size() != 3)
-      throw Usage_error("face " + std::to_string(f) + " has " + std::to_string(poly.size()) +
-                        " vertices; only triangle meshes are supported");
-    for(std::size_t v : poly)
-      if(v >= points.size())
-        throw Usage_error("face " + std::to_string(f) + " refers to a vertex that does not exist");
-    if(poly[0] == poly[1] || poly[1] == poly[2] || poly[2] == poly[0])
-      throw Usage_error("face " + std::to_string(f) + " repeats a vertex");
-    const Face_index fi = mesh.add_face(Vertex_index(static_cast<Mesh::size_type>(poly[0])),
-                                        Vertex_index(static_cast<Mesh::size_type>(poly[1])),
-                                        Vertex_index(static_cast<Mesh::size_type>(poly[2])));
-    if(fi == Mesh::null_face())
-      throw Usage_error("face " + std::to_string(f) +
-                        " makes the mesh non-manifold or inconsistently oriented");
-  }
-  if(mesh.number_of_faces() == 0)
-    throw Usage_error("'" + path + "' holds no face");
-}
-
 std::string json_escape(const std::string& s)
 {
   std::string out;
@@ -167,12 +136,15 @@ std::string number(double x)
   return os.str();
 }
 
-void write_json(std::ostream& os, const Options& o, const Mesh& mesh, const SMDF::Direction_field_result& r)
+void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
 {
+  const Mesh& mesh = input.mesh;
+  const Repair_report& rep = input.report;
   int chi = 0;
   for(const auto& c : r.components) chi += c.euler_characteristic;
   os << "{\"mesh\":\"" << json_escape(o.mesh) << "\""
-     << ",\"vertices\":" << mesh.number_of_vertices() << ",\"faces\":" << mesh.number_of_faces()
+     << ",\"vertices\":" << input.file_vertices << ",\"faces\":" << input.file_faces
+     << ",\"mesh_vertices\":" << mesh.number_of_vertices() << ",\"mesh_faces\":" << mesh.number_of_faces()
      << ",\"components\":" << r.components.size() << ",\"isolated_vertices\":" << r.number_of_isolated_vertices
      << ",\"euler_characteristic\":" << chi << ",\"degree\":" << r.degree << ",\"s\":" << number(r.smoothness_parameter);
   auto array = [&](const char* name, auto get) {
@@ -186,19 +158,29 @@ void write_json(std::ostream& os, const Options& o, const Mesh& mesh, const SMDF
   os << ",\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
+     << ",\"mollification\":" << number(r.mollification)
+     << ",\"repairs\":{\"merged_points\":" << rep.merged_points << ",\"degenerate_faces_removed\":" << rep.degenerate_polygons
+     << ",\"polygons_triangulated\":" << rep.triangulated_polygons << ",\"triangles_from_polygons\":" << rep.triangles_from_polygons
+     << ",\"repeated_faces_removed\":" << rep.repeated_triangles << ",\"faces_reoriented\":" << rep.reoriented_triangles
+     << ",\"vertices_duplicated\":" << rep.duplicated_vertices << ",\"faces_skipped\":" << rep.skipped_triangles << "}"
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms)
      << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms) << "}}\n";
 }
 
-void write_summary(std::ostream& os, const Options& o, const Mesh& mesh, const SMDF::Direction_field_result& r)
+void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
 {
+  const Mesh& mesh = input.mesh;
   int chi = 0;
   for(const auto& c : r.components) chi += c.euler_characteristic;
   os << "mesh            " << o.mesh << "\n"
      << "size            " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces, "
      << r.components.size() << " component(s), Euler characteristic " << chi << "\n"
      << "field           degree n = " << r.degree << ", s = " << r.smoothness_parameter << "\n";
+  if(input.report.any())
+    os << "repairs         " << input.report.summary() << "\n";
+  if(r.mollification > 0.)
+    os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];
@@ -227,10 +209,11 @@ int main(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv);
-    Mesh mesh;
-    read_triangle_mesh(o.mesh, mesh);
+    const Repaired_mesh<Mesh> input = read_and_repair_mesh<Mesh>(o.mesh);
+    const Mesh& mesh = input.mesh;
 
-    auto directions = mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
+    std::vector<Vector_3> direction_storage(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
+    auto directions = CGAL::make_property_map(direction_storage);
     std::vector<std::pair<Face_index, int> > singular_faces;
     const SMDF::Direction_field_result result = SMDF::compute_globally_optimal_directions(
       mesh, directions,
@@ -246,15 +229,19 @@ int main(int argc, char** argv)
       std::ofstream os;
       open_or_throw(os, o.directions);
       os << std::setprecision(17);
-      for(Vertex_index v : mesh.vertices())
+      for(Vertex_index v : input.vertex_of_file_vertex)  // the file's order; a merged or duplicated vertex: its first copy
         os << directions[v].x() << " " << directions[v].y() << " " << directions[v].z() << "\n";
     }
     if(!o.singularities.empty())
     {
       std::ofstream os;
       open_or_throw(os, o.singularities);
+      // per face of the file (a triangulated polygon: the sum over its triangles)
+      std::map<std::size_t, int> index_of_file_face;
       for(const auto& fk : singular_faces)
-        os << static_cast<std::size_t>(fk.first) << " " << fk.second << "\n";
+        index_of_file_face[input.file_face_of_face[static_cast<std::size_t>(fk.first)]] += fk.second;
+      for(const auto& fk : index_of_file_face)
+        if(fk.second != 0) os << fk.first << " " << fk.second << "\n";
     }
     if(!o.png.empty())
     {
@@ -283,11 +270,15 @@ int main(int argc, char** argv)
     {
       std::ofstream os;
       open_or_throw(os, o.json_file);
-      write_json(os, o, mesh, result);
+      write_json(os, o, input, result);
     }
-    if(o.json) write_json(std::cout, o, mesh, result);
-    else write_summary(std::cout, o, mesh, result);
+    if(o.json) write_json(std::cout, o, input, result);
+    else write_summary(std::cout, o, input, result);
     return EXIT_SUCCESS;
+  }
+  catch(const Mesh_input_error& e)
+  {
+    std::cerr << "direction_field: error: " << e.what() << std::endl;
   }
   catch(const Usage_error& e)
   {

@@ -108,7 +108,104 @@ a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 assert a["vertices"] == 6 and a["faces"] == 8 and a["index_sum"] == 8
 EOF
 
-# 5. A shared mesh, with a picture.
+# 5. Repairs: polygons, duplicate points, inconsistent orientation, a
+#    non-manifold vertex. Outputs stay in the file's order.
+cat > "$out/cube_quads.off" <<'EOF2'
+OFF
+8 6 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+4 0 3 2 1
+4 4 5 6 7
+4 0 1 5 4
+4 1 2 6 5
+4 2 3 7 6
+4 3 0 4 7
+EOF2
+"$bin" "$out/quad.off" --json --directions "$out/quad_dir.txt" > "$out/quad.json"
+check "a quad is triangulated" python_checks "$out/quad.json" "$out/quad_dir.txt" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["repairs"]["polygons_triangulated"] == 1 and d["repairs"]["triangles_from_polygons"] == 2
+assert d["vertices"] == 4 and d["faces"] == 1 and d["mesh_faces"] == 2
+assert len([l for l in open(sys.argv[2]) if l.strip()]) == 4
+EOF2
+for n in 1 4; do
+  "$bin" "$out/cube_quads.off" --degree $n --json --singularities "$out/cube_sing$n.txt" --directions "$out/cube_dir$n.txt" > "$out/cube$n.json"
+  check "quad cube n=$n: singularities per file face, Poincare-Hopf" python_checks "$out/cube$n.json" "$out/cube_sing$n.txt" "$out/cube_dir$n.txt" $n <<'EOF2'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+n = int(sys.argv[4])
+sing = [tuple(map(int, l.split())) for l in open(sys.argv[2]) if l.strip()]
+assert all(0 <= f < 6 for f, k in sing) and len(set(f for f, k in sing)) == len(sing)
+assert sum(k for f, k in sing) == 2 * n == d["index_sum"]
+assert d["repairs"]["polygons_triangulated"] == 6 and d["faces"] == 6 and d["mesh_faces"] == 12
+dirs = [list(map(float, l.split())) for l in open(sys.argv[3]) if l.strip()]
+assert len(dirs) == 8 and all(abs(math.sqrt(sum(x * x for x in v)) - 1) < 1e-12 for v in dirs)
+EOF2
+done
+# the octahedron with its first face flipped and vertex 4 written twice (the copy used by two faces)
+{ echo OFF; echo "7 8 0"; sed -n '3,8p' "$out/octahedron.off"; echo "0 0 1";
+  echo "3 4 2 0"; sed -n '10,11p' "$out/octahedron.off"; echo "3 3 0 6"; sed -n '13,16p' "$out/octahedron.off"; } \
+  > "$out/octahedron_messy.off"
+"$bin" "$out/octahedron_messy.off" --json --directions "$out/messy_dir.txt" --singularities "$out/messy_sing.txt" > "$out/messy.json"
+check "messy octahedron: repaired" python_checks "$out/messy.json" "$out/messy_dir.txt" "$out/messy_sing.txt" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+r = d["repairs"]
+assert r["merged_points"] == 1 and r["faces_reoriented"] >= 1, r
+assert d["euler_characteristic"] == 2 and d["index_sum"] == 8 and d["vertices"] == 7
+dirs = [l.split() for l in open(sys.argv[2]) if l.strip()]
+assert len(dirs) == 7 and dirs[6] == dirs[4]          # the copy reports its first copy's direction
+assert sum(int(l.split()[1]) for l in open(sys.argv[3]) if l.strip()) == 8
+EOF2
+# two tetrahedra sharing one vertex: a non-manifold vertex, duplicated
+cat > "$out/bowtie.off" <<'EOF2'
+OFF
+7 8 0
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+-1 0 0
+0 -1 0
+0 0 -1
+3 0 2 1
+3 0 1 3
+3 0 3 2
+3 1 2 3
+3 0 5 4
+3 0 4 6
+3 0 6 5
+3 4 5 6
+EOF2
+"$bin" "$out/bowtie.off" --degree 2 --json --directions "$out/bowtie_dir.txt" > "$out/bowtie.json"
+check "non-manifold vertex: duplicated, two spheres" python_checks "$out/bowtie.json" "$out/bowtie_dir.txt" <<'EOF2'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+assert d["repairs"]["vertices_duplicated"] >= 1 and d["components"] == 2 and d["mesh_vertices"] == 8
+assert d["component_index_sums"] == [4, 4] and d["euler_characteristic"] == 4
+dirs = [list(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
+assert len(dirs) == 7 and all(abs(math.sqrt(sum(x * x for x in v)) - 1) < 1e-12 for v in dirs)
+EOF2
+# a non-convex (L-shaped) planar polygon
+printf 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n' > "$out/ell.off"
+"$bin" "$out/ell.off" --json --directions "$out/ell_dir.txt" > "$out/ell.json"
+check "non-convex polygon: ear clipping" python_checks "$out/ell.json" "$out/ell_dir.txt" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["mesh_faces"] == 4 and d["euler_characteristic"] == 1 and d["mollification"] == 0
+# a flat disk: the smoothest field is parallel, no singularity
+assert d["singular_faces"] == 0 and abs(d["eigenvalues"][0]) < 1e-8
+EOF2
+
+# 6. A shared mesh, with a picture.
 if [ -n "$shared" ] && [ -f "$shared/sphere_oded.off" ]; then
   "$bin" "$shared/sphere_oded.off" --degree 4 --png "$out/sphere.png" --json > "$out/sphere.json"
   check "sphere_oded run" test $? -eq 0
@@ -134,7 +231,7 @@ else
   echo "SKIPPED shared-mesh checks: ../shared/data/meshes not found"
 fi
 
-# 6. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
+# 7. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
 bad() {  # bad DESCRIPTION ARGS...
   local what=$1
   shift
@@ -150,7 +247,6 @@ bad "degree 0" "$out/octahedron.off" --degree 0
 bad "degree not a number" "$out/octahedron.off" --degree four
 bad "s outside [-1, 1]" "$out/octahedron.off" --s 1.5
 bad "unknown option" "$out/octahedron.off" --frobnicate
-bad "quad face" "$out/quad.off"
 bad "truncated file" "$out/truncated.off"
 bad "NaN coordinate" "$out/nan.off"
 bad "two meshes" "$out/octahedron.off" "$out/octahedron.off"

@@ -193,10 +193,8 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
+    \cgalParamType{a class model of `DirectionFieldTraits_3` (every \cgal kernel is one)}
     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-    \cgalParamExtra{Only `FT`, `Point_3`, `Vector_3`, `Compute_x_3`, `Compute_y_3`, `Compute_z_3` and
-                    `Construct_vector_3` are used.}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_index_map}
     \cgalParamDescription{a property map associating to each vertex of `tmesh` a unique index between `0` and
