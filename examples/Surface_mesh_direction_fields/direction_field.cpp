@@ -3,6 +3,8 @@
 //   direction_field [MESH] [--degree N] [--s S] [--directions FILE]
 //                   [--singularities FILE] [--json] [--png FILE]
 //                   [--json-file FILE] [--seed N] [--max-iterations N] [--tolerance T]
+//                   [--align none|curvature|min-curvature|max-curvature] [--guidance FILE]
+//                   [--lambda L | --alignment-weight T] [--constrain-boundary tangent|normal]
 //
 // Computes the globally smoothest n-direction field of a mesh (OFF, OBJ, PLY
 // or STL) and its singular faces. The file is read as a polygon soup and
@@ -19,6 +21,13 @@
 //                         the input file and its integer index k (index k/n)
 //   --json                one line of JSON on stdout (see README.md)
 //   --json-file FILE      the same line of JSON written to FILE
+//   --align ...           guidance by the principal curvatures (even degrees):
+//                         curvature = max-curvature (for n = 4 both at once)
+//   --guidance FILE       guidance by a vector field, one "x y z" per vertex of the
+//                         file (length = weight, zero = no preference)
+//   --lambda L            the lambda_t of (A - lambda_t M) u = M q (default 0)
+//   --alignment-weight T  or the alignment weight t in (0, 1) to reach
+//   --constrain-boundary  fix one direction tangent (or normal) to the boundary
 //   --png FILE            a picture of the field (shaded mesh, directions,
 //                         singular faces in red (+) and blue (-))
 // Exit status 0 on success; otherwise 1, with one line on stderr.
@@ -65,6 +74,9 @@ struct Options
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
+  std::string align = "none", guidance, constrain_boundary = "none";
+  bool lambda_given = false, weight_given = false;
+  double lambda = 0., weight = 0.5;
 };
 
 // A problem with the input or the options: reported on one line, exit status 1.
@@ -73,7 +85,9 @@ struct Usage_error : std::runtime_error { using std::runtime_error::runtime_erro
 const char* const usage =
   "usage: direction_field [MESH] [--degree N] [--s S] [--directions FILE] [--singularities FILE]\n"
   "                       [--json] [--json-file FILE] [--png FILE] [--seed N] [--max-iterations N]\n"
-  "                       [--tolerance T]\n";
+  "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
+  "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
+  "                       [--constrain-boundary tangent|normal]\n";
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
@@ -107,12 +121,23 @@ Options parse_options(int argc, char** argv)
     else if(a == "--seed") o.seed = parse_number<unsigned int>(a, value());
     else if(a == "--max-iterations") o.max_iterations = parse_number<unsigned int>(a, value());
     else if(a == "--tolerance") o.tolerance = parse_number<double>(a, value());
+    else if(a == "--align") o.align = value();
+    else if(a == "--guidance") o.guidance = value();
+    else if(a == "--lambda") { o.lambda = parse_number<double>(a, value()); o.lambda_given = true; }
+    else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, value()); o.weight_given = true; }
+    else if(a == "--constrain-boundary") o.constrain_boundary = value();
     else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
     else if(o.mesh.empty()) o.mesh = a;
     else throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
   }
   if(o.mesh.empty())
     o.mesh = CGAL::data_file_path("meshes/fandisk.off");
+  if(o.align != "none" && o.align != "curvature" && o.align != "min-curvature" && o.align != "max-curvature")
+    throw Usage_error("--align expects none, curvature, min-curvature or max-curvature, got '" + o.align + "'");
+  if(o.constrain_boundary != "none" && o.constrain_boundary != "tangent" && o.constrain_boundary != "normal")
+    throw Usage_error("--constrain-boundary expects tangent or normal, got '" + o.constrain_boundary + "'");
+  if(o.lambda_given && o.weight_given)
+    throw Usage_error("give either --lambda or --alignment-weight, not both");
   return o;
 }
 
@@ -134,6 +159,15 @@ std::string number(double x)
   std::ostringstream os;
   os << std::setprecision(17) << x;
   return os.str();
+}
+
+// The largest component: the one whose lambda and t the JSON reports.
+const SMDF::Component_report& main_component(const SMDF::Direction_field_result& r)
+{
+  std::size_t best = 0;
+  for(std::size_t i = 1; i < r.components.size(); ++i)
+    if(r.components[i].number_of_vertices > r.components[best].number_of_vertices) best = i;
+  return r.components[best];
 }
 
 void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
@@ -159,6 +193,9 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
      << ",\"mollification\":" << number(r.mollification)
+     << ",\"lambda\":" << number(main_component(r).lambda)
+     << ",\"alignment_weight\":" << number(main_component(r).alignment_weight)
+     << ",\"eigenvalue_bound\":" << number(main_component(r).eigenvalue)
      << ",\"repairs\":{\"merged_points\":" << rep.merged_points << ",\"degenerate_faces_removed\":" << rep.degenerate_polygons
      << ",\"polygons_triangulated\":" << rep.triangulated_polygons << ",\"triangles_from_polygons\":" << rep.triangles_from_polygons
      << ",\"repeated_faces_removed\":" << rep.repeated_triangles << ",\"faces_reoriented\":" << rep.reoriented_triangles
@@ -179,6 +216,9 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
      << "field           degree n = " << r.degree << ", s = " << r.smoothness_parameter << "\n";
   if(input.report.any())
     os << "repairs         " << input.report.summary() << "\n";
+  if(main_component(r).alignment_weight > 0. || main_component(r).lambda != 0.)
+    os << "alignment       lambda_t = " << main_component(r).lambda << " (bound lambda_1 = " << main_component(r).eigenvalue
+       << "), alignment weight t = " << main_component(r).alignment_weight << "\n";
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
@@ -215,15 +255,54 @@ int main(int argc, char** argv)
     std::vector<Vector_3> direction_storage(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
     auto directions = CGAL::make_property_map(direction_storage);
     std::vector<std::pair<Face_index, int> > singular_faces;
-    const SMDF::Direction_field_result result = SMDF::compute_globally_optimal_directions(
-      mesh, directions,
-      CGAL::parameters::degree(o.degree)
-        .smoothness_parameter(o.s)
-        .random_seed(o.seed)
-        .number_of_iterations(o.max_iterations)
-        .residual_tolerance(o.tolerance)
-        .singularities_output_iterator(std::back_inserter(singular_faces)));
-
+    // guidance vectors of the file's vertices, carried to the mesh's (copies included)
+    std::vector<Vector_3> guidance(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
+    if(!o.guidance.empty())
+    {
+      std::ifstream in(o.guidance);
+      if(!in) throw Usage_error("cannot open '" + o.guidance + "'");
+      std::vector<Vector_3> file_guidance;
+      std::string line;
+      while(std::getline(in, line))
+      {
+        if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        std::istringstream is(line);
+        double x, y, z;
+        if(!(is >> x >> y >> z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+          throw Usage_error("line " + std::to_string(file_guidance.size() + 1) + " of '" + o.guidance +
+                            "' is not three finite numbers");
+        file_guidance.emplace_back(x, y, z);
+      }
+      if(file_guidance.size() != input.file_vertices)
+        throw Usage_error("'" + o.guidance + "' has " + std::to_string(file_guidance.size()) + " vectors for " +
+                          std::to_string(input.file_vertices) + " vertices");
+      for(Vertex_index v : mesh.vertices())
+        guidance[std::size_t(v)] = file_guidance[input.file_vertex_of_vertex[std::size_t(v)]];
+    }
+    const SMDF::Principal_curvature_alignment curvature =
+      o.align == "none" ? SMDF::Principal_curvature_alignment::NONE
+      : o.align == "min-curvature" ? SMDF::Principal_curvature_alignment::MINIMUM
+                                   : SMDF::Principal_curvature_alignment::MAXIMUM;
+    const SMDF::Boundary_alignment boundary =
+      o.constrain_boundary == "tangent" ? SMDF::Boundary_alignment::TANGENT
+      : o.constrain_boundary == "normal" ? SMDF::Boundary_alignment::NORMAL : SMDF::Boundary_alignment::NONE;
+    auto base = CGAL::parameters::degree(o.degree)
+                  .smoothness_parameter(o.s)
+                  .random_seed(o.seed)
+                  .number_of_iterations(o.max_iterations)
+                  .residual_tolerance(o.tolerance)
+                  .principal_curvature_alignment(curvature)
+                  .boundary_alignment(boundary)
+                  .singularities_output_iterator(std::back_inserter(singular_faces));
+    auto with_guidance = [&](auto np) {
+      if(o.guidance.empty())
+        return SMDF::compute_globally_optimal_directions(mesh, directions, np);
+      return SMDF::compute_globally_optimal_directions(mesh, directions,
+                                                       np.vertex_guidance_map(CGAL::make_property_map(guidance)));
+    };
+    const SMDF::Direction_field_result result =
+      o.weight_given ? with_guidance(base.alignment_weight(o.weight))
+                     : with_guidance(base.alignment_lambda(o.lambda));
     if(!o.directions.empty())
     {
       std::ofstream os;

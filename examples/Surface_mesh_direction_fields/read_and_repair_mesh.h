@@ -74,6 +74,7 @@ struct Repaired_mesh
   std::size_t file_vertices = 0, file_faces = 0;
   std::vector<Vertex_index> vertex_of_file_vertex;  // file vertex -> mesh vertex (first copy)
   std::vector<std::size_t> file_face_of_face;       // mesh face -> polygon of the file
+  std::vector<std::size_t> file_vertex_of_vertex;   // mesh vertex -> the file vertex it copies
   Repair_report report;
 };
 
@@ -135,8 +136,9 @@ struct Counting_visitor : public CGAL::Polygon_mesh_processing::Default_orientat
 {
   std::size_t* reversed;
   std::size_t* duplicated;
+  std::vector<std::pair<std::size_t, std::size_t> >* copies;  // (original point, new point)
   void polygon_orientation_reversed(std::size_t) { ++*reversed; }
-  void duplicated_vertex(std::size_t, std::size_t) { ++*duplicated; }
+  void duplicated_vertex(std::size_t original, std::size_t copy) { ++*duplicated; copies->emplace_back(original, copy); }
 };
 
 // A pre-scan of ASCII OFF files: CGAL's reader trusts the vertex count of
@@ -274,6 +276,8 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
   read_and_repair_internal::Counting_visitor visitor;
   visitor.reversed = &out.report.reoriented_triangles;
   visitor.duplicated = &out.report.duplicated_vertices;
+  std::vector<std::pair<std::size_t, std::size_t> > copies;
+  visitor.copies = &copies;
   CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles, CGAL::parameters::visitor(visitor));
 
   // 6. the mesh, vertex i being point i
@@ -288,6 +292,10 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
     out.file_face_of_face.push_back(polygon_of_triangle[t]);
   }
   if(out.mesh.number_of_faces() == 0) throw Mesh_input_error("'" + path + "' holds no usable face");
+  out.file_vertex_of_vertex.resize(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) out.file_vertex_of_vertex[i] = i < out.file_vertices ? i : i;
+  for(const auto& oc : copies)
+    if(oc.second < points.size()) out.file_vertex_of_vertex[oc.second] = out.file_vertex_of_vertex[oc.first];
   out.vertex_of_file_vertex.resize(out.file_vertices);
   for(std::size_t i = 0; i < out.file_vertices; ++i)
     out.vertex_of_file_vertex[i] = Vertex_index(static_cast<typename Mesh::size_type>(first_copy[i]));

@@ -36,10 +36,17 @@ struct Component_report
   int euler_characteristic = 0;
   /// `true` if the component has no boundary
   bool is_closed = false;
-  /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$; it scales like
+  /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$, the upper bound of
+  /// \f$ \lambda_t \f$ (not computed, 0, for a field with constraints only); it scales like
   /// the inverse of an area (it is `n (1 - s) / R^2` on a round sphere of radius `R`)
   double eigenvalue = 0.;
-  /// number of inverse iterations performed
+  /// the \f$ \lambda_t \f$ of the aligned or constrained solve \f$ (A - \lambda_t M) u = M q \f$
+  /// (0 for the smoothest field)
+  double lambda = 0.;
+  /// the alignment weight \f$ t = 1 / (1 + \|u\|_M) \f$ achieved, for \f$ \|q\|_M = 1 \f$
+  /// (0 without guidance: the smoothest field)
+  double alignment_weight = 0.;
+  /// number of inverse iterations performed (plus, with `alignment_weight`, the linear solves of the root finding)
   std::size_t iterations = 0;
   /// final relative residual \f$ \|A u - \lambda M u\| / (\sigma \|M u\|) \f$, with
   /// \f$ \sigma = \mathrm{tr}(A) / \mathrm{tr}(M) \f$

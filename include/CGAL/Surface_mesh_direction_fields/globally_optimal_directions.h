@@ -21,7 +21,10 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/alignment.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/aligned_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
@@ -92,6 +95,117 @@ inline void describe_component(const Indexed_mesh& m, const Component& comp, Com
   report.number_of_faces = comp.faces.size();
   report.euler_characteristic = static_cast<int>(V - E + F);
   report.is_closed = (border_vertices == 0);
+}
+
+
+// The guidance field q (n-th power coefficients per vertex), from the
+// principal curvatures and/or a user vector field; empty if there is none.
+template <typename TriangleMesh, typename NamedParameters, typename VertexIndexMap, typename SparseSolver,
+          typename ToArray>
+std::vector<std::complex<double> >
+guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const Components& components,
+                      const NamedParameters& np, VertexIndexMap vim, const std::vector<Vec3>& normals, int degree,
+                      SparseSolver& solver, const ToArray& to_array, const TriangleMesh& tmesh)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  typedef std::complex<double> Complex;
+  std::vector<Complex> q;
+  const Principal_curvature_alignment curvature =
+    choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment), Principal_curvature_alignment::NONE);
+  if(curvature != Principal_curvature_alignment::NONE)
+  {
+    if(degree % 2 != 0)
+      throw Invalid_input_error("curvature alignment needs an even degree n (got " + std::to_string(degree) + ")");
+    // The Hopf differential is a line field (n = 2): its coefficients solve
+    // M_2 q = q~ with the mass matrix of the degree-2 connection.
+    const std::vector<Complex> pairing = hopf_differential_pairing(mesh, ts);
+    const Connection line_connection = compute_connection(mesh, ts, 2);
+    q.assign(mesh.number_of_vertices(), Complex(0., 0.));
+    for(const Component& comp : components.list)
+    {
+      const Energy_and_mass em = assemble_energy_and_mass(mesh, ts, line_connection, comp, components.local_index, 0.);
+      Complex_vector rhs(static_cast<Eigen::Index>(comp.vertices.size()));
+      for(std::size_t i = 0; i < comp.vertices.size(); ++i) rhs[static_cast<Eigen::Index>(i)] = pairing[comp.vertices[i]];
+      const Complex_vector line = solve_aligned_system(em.mass, em.mass, 0., rhs, Constraints(), solver);
+      for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+      {
+        Complex w = line[static_cast<Eigen::Index>(i)];
+        if(curvature == Principal_curvature_alignment::MINIMUM) w = -w;  // the orthogonal line field
+        q[comp.vertices[i]] = std::pow(w, degree / 2);
+      }
+    }
+  }
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value)
+  {
+    const auto guidance_map = get_parameter(np, internal_np::vertex_guidance_map);
+    if(q.empty()) q.assign(mesh.number_of_vertices(), Complex(0., 0.));
+    for(auto v : vertices(tmesh))
+    {
+      const std::size_t i = static_cast<std::size_t>(get(vim, v));
+      const Vec3 g = to_array(get(guidance_map, v));
+      if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2]))
+        throw Invalid_input_error("the guidance vector of vertex " + std::to_string(i) + " is not finite");
+      q[i] += tangent_coefficient(mesh, ts, i, g, degree, normals[i]);
+    }
+  }
+  return q;
+}
+
+struct Vertex_constraints
+{
+  std::vector<unsigned char> is_constrained;        // per vertex; empty: no constraint
+  std::vector<std::complex<double> > values;        // unit coefficients where constrained
+};
+
+// Hard constraints: boundary alignment and/or vertex_is_constrained_map with
+// vertex_constrained_direction_map (the latter win where both apply).
+template <typename TriangleMesh, typename NamedParameters, typename VertexIndexMap, typename ToArray>
+Vertex_constraints vertex_constraints(const Indexed_mesh& mesh, const Tangent_spaces& ts, const NamedParameters& np,
+                                      VertexIndexMap vim, const std::vector<Vec3>& normals, int degree,
+                                      const ToArray& to_array, const TriangleMesh& tmesh)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  Vertex_constraints vc;
+  const Boundary_alignment boundary =
+    choose_parameter(get_parameter(np, internal_np::boundary_alignment), Boundary_alignment::NONE);
+  constexpr bool has_map = !is_default_parameter<NamedParameters, internal_np::vertex_is_constrained_t>::value;
+  if(boundary == Boundary_alignment::NONE && !has_map)
+    return vc;
+  vc.is_constrained.assign(mesh.number_of_vertices(), 0);
+  vc.values.assign(mesh.number_of_vertices(), std::complex<double>(0., 0.));
+  if(boundary != Boundary_alignment::NONE)
+    for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+      if(mesh.is_border_vertex[v])
+      {
+        vc.is_constrained[v] = 1;
+        vc.values[v] = boundary_coefficient(mesh, ts, v, degree, boundary == Boundary_alignment::NORMAL);
+      }
+  if constexpr(has_map)
+  {
+    if constexpr(is_default_parameter<NamedParameters, internal_np::vertex_constrained_direction_map_t>::value)
+      throw Invalid_input_error("vertex_is_constrained_map needs vertex_constrained_direction_map");
+    else
+    {
+      const auto is_constrained = get_parameter(np, internal_np::vertex_is_constrained);
+      const auto directions = get_parameter(np, internal_np::vertex_constrained_direction_map);
+      for(auto v : vertices(tmesh))
+      {
+        const std::size_t i = static_cast<std::size_t>(get(vim, v));
+        if(!get(is_constrained, v) || mesh.fan_size(i) == 0) continue;
+        const std::complex<double> c = tangent_coefficient(mesh, ts, i, to_array(get(directions, v)), degree, normals[i]);
+        if(!(std::abs(c) > 0.) || !std::isfinite(std::abs(c)))
+          throw Invalid_input_error("the prescribed direction of constrained vertex " + std::to_string(i) +
+                                    " is zero, normal to the surface or not finite");
+        vc.is_constrained[i] = 1;
+        vc.values[i] = c / std::abs(c);
+      }
+    }
+  }
+  return vc;
 }
 
 } // namespace internal
@@ -309,33 +423,121 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
   const auto setup_end = Clock::now();
   result.timings.setup_ms = std::chrono::duration<double, std::milli>(setup_end - start).count();
 
-  // --- one eigenproblem per component
+  // --- vertex normals: the tangent planes of the outputs and of the guidance vectors
+  std::vector<internal::Vec3> normals;
+  if constexpr(is_default_parameter<CGAL_NP_CLASS, internal_np::vertex_normal_map_t>::value)
+    normals = internal::angle_weighted_vertex_normals(mesh, ts);
+  else
+  {
+    const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
+    normals.resize(mesh.number_of_vertices());
+    for(vertex_descriptor v : vertices(tmesh))
+      normals[static_cast<std::size_t>(get(vim, v))] = internal::normalized(to_array(get(vnm, v)));
+  }
+
+  // --- guidance field q and hard constraints (method.md, section 6)
+  const std::vector<Complex> guidance =
+    internal::guidance_coefficients(mesh, ts, components, np, vim, normals, result.degree, solver, to_array, tmesh);
+  const bool has_guidance = !guidance.empty();
+  const internal::Vertex_constraints constraints =
+    internal::vertex_constraints(mesh, ts, np, vim, normals, result.degree, to_array, tmesh);
+  const bool lambda_given = !is_default_parameter<CGAL_NP_CLASS, internal_np::alignment_lambda_t>::value;
+  const bool weight_given = !is_default_parameter<CGAL_NP_CLASS, internal_np::alignment_weight_t>::value;
+  const double lambda_requested = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
+  const double weight_requested = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
+  if(lambda_given && weight_given)
+    throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
+  if(lambda_given && !std::isfinite(lambda_requested))
+    throw Invalid_input_error("alignment_lambda must be a finite number");
+  if(weight_given && !(weight_requested > 0. && weight_requested < 1.))
+    throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + std::to_string(weight_requested) + ")");
+  if(weight_given && !has_guidance)
+    throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+
+  // --- one problem per component: the smallest eigenvector, or the aligned /
+  //     constrained linear solve
   std::vector<Complex> u(mesh.number_of_vertices(), Complex(0., 0.));
   std::vector<double> magnitude(mesh.number_of_vertices(), 0.);
   result.components.resize(components.list.size());
   for(std::size_t c = 0; c < components.list.size(); ++c)
   {
     const internal::Component& comp = components.list[c];
-    const internal::Eigen_solve_result eig =
-      internal::smallest_eigenpair(matrices[c].energy, matrices[c].mass, solver, options);
+    const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
     Component_report& report = result.components[c];
     internal::describe_component(mesh, comp, report);
-    report.eigenvalue = eig.eigenvalue;
-    report.iterations = eig.iterations;
-    report.residual = eig.residual;
-    report.converged = eig.converged;
-    result.timings.factorization_ms += eig.factorization_ms;
+    const internal::Complex_sparse_matrix& A = matrices[c].energy;
+    const internal::Complex_sparse_matrix& M = matrices[c].mass;
+
+    // this component's guidance, normalized to ||q||_M = 1 (none if it vanishes here)
+    internal::Complex_vector q = internal::Complex_vector::Zero(nc);
+    for(Eigen::Index i = 0; i < nc; ++i)
+      if(has_guidance) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
+    const double q_norm = internal::m_norm(M, q);
+    const bool aligned = has_guidance && q_norm > 0.;
+    if(aligned) q /= q_norm;
+    internal::Constraints local_constraints;
+    bool constrained = false;
+    if(!constraints.is_constrained.empty())
+    {
+      local_constraints.is_constrained.resize(comp.vertices.size());
+      local_constraints.values.resize(nc);
+      for(Eigen::Index i = 0; i < nc; ++i)
+      {
+        const std::size_t v = comp.vertices[static_cast<std::size_t>(i)];
+        local_constraints.is_constrained[static_cast<std::size_t>(i)] = constraints.is_constrained[v];
+        local_constraints.values[i] = constraints.values[v];
+        constrained = constrained || constraints.is_constrained[v];
+      }
+    }
+
+    internal::Complex_vector field;
+    const bool needs_eigenvalue = !constrained || aligned;  // lambda_1: the smoothest field, or the bound of lambda_t
+    if(needs_eigenvalue)
+    {
+      const internal::Eigen_solve_result eig = internal::smallest_eigenpair(A, M, solver, options);
+      report.eigenvalue = eig.eigenvalue;
+      report.iterations = eig.iterations;
+      report.residual = eig.residual;
+      report.converged = eig.converged;
+      result.timings.factorization_ms += eig.factorization_ms;
+      field = eig.vector;
+    }
+    if(aligned || constrained)
+    {
+      const internal::Complex_vector Mq = M * q;
+      double lambda = lambda_requested;
+      if(aligned && weight_given)
+      {
+        const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
+        std::size_t evaluations = 0;
+        lambda = internal::find_lambda_for_weight(A, M, Mq, local_constraints, report.eigenvalue, weight_requested,
+                                                  sigma, solver, field, evaluations);
+        report.iterations += evaluations;
+      }
+      else
+      {
+        if(aligned && !(lambda < report.eigenvalue))
+          throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
+                                    std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
+                                    " (got " + std::to_string(lambda) + ")");
+        field = internal::solve_aligned_system(A, M, lambda, Mq, local_constraints, solver);
+      }
+      report.lambda = lambda;
+      report.alignment_weight = aligned ? internal::alignment_weight_of(M, field) : 0.;
+      const double field_norm = internal::m_norm(M, field);
+      if(field_norm > 0.) field /= field_norm;
+    }
 
     double area = 0.;
     for(std::size_t f : comp.faces) area += ts.face_area[f];
     for(std::size_t i = 0; i < comp.vertices.size(); ++i)
     {
-      u[comp.vertices[i]] = eig.vector[static_cast<Eigen::Index>(i)];
-      magnitude[comp.vertices[i]] = std::abs(eig.vector[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
+      u[comp.vertices[i]] = field[static_cast<Eigen::Index>(i)];
+      magnitude[comp.vertices[i]] = std::abs(field[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
     }
-    result.iterations = (std::max)(result.iterations, eig.iterations);
-    result.residual = (std::max)(result.residual, eig.residual);
-    result.converged = result.converged && eig.converged;
+    result.iterations = (std::max)(result.iterations, report.iterations);
+    result.residual = (std::max)(result.residual, report.residual);
+    result.converged = result.converged && report.converged;
   }
 
   // --- singularities
@@ -359,16 +561,6 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
   }
 
   // --- directions in 3D
-  std::vector<internal::Vec3> normals;
-  if constexpr(is_default_parameter<CGAL_NP_CLASS, internal_np::vertex_normal_map_t>::value)
-    normals = internal::angle_weighted_vertex_normals(mesh, ts);
-  else
-  {
-    const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
-    normals.resize(mesh.number_of_vertices());
-    for(vertex_descriptor v : vertices(tmesh))
-      normals[static_cast<std::size_t>(get(vim, v))] = internal::normalized(to_array(get(vnm, v)));
-  }
   auto construct_vector = gt.construct_vector_3_object();
   for(vertex_descriptor v : vertices(tmesh))
   {

@@ -58,6 +58,10 @@ struct Indexed_mesh
   std::vector<std::size_t> fan_offsets;              // |V| + 1 entries
   std::vector<std::size_t> fan_corners;              // corners 3 f + c, counter-clockwise
   std::vector<unsigned char> is_border_vertex;       // per vertex
+  // For the side of corner 3f+c (the halfedge faces[f][c] -> faces[f][c+1]),
+  // the corner of the other face whose first side is the reverse halfedge;
+  // `no_index` on the border.
+  std::vector<std::size_t> twin_corner;
 
   // Connected components (through shared vertices). Isolated vertices belong
   // to no component (`no_index`).
@@ -136,6 +140,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
   }
 
   m.faces.resize(nf);
+  m.twin_corner.assign(3 * nf, no_index);
   std::vector<std::size_t> incident_faces(nv, 0);
   for(auto f : faces(tm))
   {
@@ -158,6 +163,15 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
     while(g != h) { g = next(g, tm); ++c; }
     return 3 * static_cast<std::size_t>(get(fim, f)) + static_cast<std::size_t>(c);
   };
+
+  for(auto f : faces(tm))
+  {
+    halfedge_descriptor h = halfedge(f, tm);
+    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    for(int c = 0; c < 3; ++c, h = next(h, tm))
+      if(!is_border(opposite(h, tm), tm))
+        m.twin_corner[3 * fi + c] = corner_of(opposite(h, tm));
+  }
 
   m.fan_offsets.assign(nv + 1, 0);
   m.is_border_vertex.assign(nv, 0);

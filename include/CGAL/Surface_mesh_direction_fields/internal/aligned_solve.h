@@ -1,0 +1,155 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+// The aligned and constrained fields (method.md, section 6): the linear system
+//     (A - lambda M) u = M q,     u_C = c on the constrained vertices C,
+// i.e. (A - lambda M)_FF u_F = (M q)_F - (A - lambda M)_FC c on the free ones.
+// For lambda < lambda_1 the matrix is Hermitian positive definite. With
+// q = 0 and lambda = 0 this is the smoothest field with the values c fixed.
+// The alignment weight t = 1 / (1 + ||u||_M), for ||q||_M = 1, decreases
+// strictly as lambda grows from -infinity (t -> 1: the guidance itself) to
+// lambda_1 (t -> 0: the smoothest field); a requested t is found by root
+// finding on log(lambda_1 - lambda).
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+struct Constraints
+{
+  std::vector<unsigned char> is_constrained;  // per local vertex
+  Complex_vector values;                       // c, used where constrained
+  bool empty() const
+  {
+    for(unsigned char b : is_constrained) if(b) return false;
+    return true;
+  }
+};
+
+template <typename SparseSolver>
+Complex_vector solve_aligned_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
+                                    const Complex_vector& Mq, const Constraints& constraints, SparseSolver& solver)
+{
+  typedef typename SparseSolver::Matrix Solver_matrix;
+  typedef typename SparseSolver::Vector Solver_vector;
+  typedef typename SparseSolver::NT Solver_NT;
+  const Eigen::Index n = A.rows();
+  std::vector<Eigen::Index> free_index(static_cast<std::size_t>(n), -1);
+  Eigen::Index nf = 0;
+  for(Eigen::Index i = 0; i < n; ++i)
+    if(constraints.is_constrained.empty() || !constraints.is_constrained[static_cast<std::size_t>(i)])
+      free_index[static_cast<std::size_t>(i)] = nf++;
+
+  Complex_vector u(n);
+  for(Eigen::Index i = 0; i < n; ++i)
+    u[i] = free_index[static_cast<std::size_t>(i)] < 0 ? constraints.values[i] : Complex(0., 0.);
+  if(nf == 0) return u;
+
+  const Complex_sparse_matrix K = A - lambda * M;
+  Solver_matrix K_ff(static_cast<int>(nf), static_cast<int>(nf));
+  Complex_vector rhs(nf);
+  for(Eigen::Index i = 0; i < n; ++i)
+    if(free_index[static_cast<std::size_t>(i)] >= 0) rhs[free_index[static_cast<std::size_t>(i)]] = Mq[i];
+  for(Eigen::Index col = 0; col < K.outerSize(); ++col)
+    for(Complex_sparse_matrix::InnerIterator it(K, col); it; ++it)
+    {
+      const Eigen::Index r = free_index[static_cast<std::size_t>(it.row())];
+      const Eigen::Index c = free_index[static_cast<std::size_t>(it.col())];
+      if(r < 0) continue;
+      if(c >= 0) K_ff.add_coef(static_cast<std::size_t>(r), static_cast<std::size_t>(c), it.value());
+      else rhs[r] -= it.value() * u[it.col()];
+    }
+  Solver_NT D;
+  if(!solver.factor(K_ff, D))
+    throw Solver_failure_error("the sparse solver could not factor A - lambda M");
+  Solver_vector b(static_cast<int>(nf)), x(static_cast<int>(nf));
+  for(Eigen::Index i = 0; i < nf; ++i) b[i] = rhs[i];
+  if(!solver.linear_solver(b, x))
+    throw Solver_failure_error("the sparse solver failed on the aligned system");
+  for(Eigen::Index i = 0; i < n; ++i)
+    if(free_index[static_cast<std::size_t>(i)] >= 0) u[i] = x[free_index[static_cast<std::size_t>(i)]] / D;
+  return u;
+}
+
+inline double alignment_weight_of(const Complex_sparse_matrix& M, const Complex_vector& u)
+{
+  return 1. / (1. + m_norm(M, u));
+}
+
+// lambda in (-infinity, lambda_1) with t(lambda) = target, by the Illinois
+// variant of regula falsi on x = log(lambda_1 - lambda), where t is increasing
+// in x. Returns lambda; `u` receives the solution there.
+template <typename SparseSolver>
+double find_lambda_for_weight(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, const Complex_vector& Mq,
+                              const Constraints& constraints, double lambda_1, double target, double scale,
+                              SparseSolver& solver, Complex_vector& u, std::size_t& evaluations)
+{
+  auto weight_at = [&](double x, Complex_vector& sol) {
+    sol = solve_aligned_system(A, M, lambda_1 - std::exp(x), Mq, constraints, solver);
+    ++evaluations;
+    return alignment_weight_of(M, sol) - target;
+  };
+  // bracket: start at a distance of the order of the eigenvalue scale
+  double x_lo = std::log(1e-3 * scale), x_hi = x_lo;
+  Complex_vector u_lo, u_hi;
+  double f_lo = weight_at(x_lo, u_lo), f_hi = f_lo;
+  u_hi = u_lo;
+  for(int k = 0; k < 80 && f_lo > 0.; ++k) { x_hi = x_lo; f_hi = f_lo; u_hi = u_lo; x_lo -= 2.3; f_lo = weight_at(x_lo, u_lo); }
+  for(int k = 0; k < 80 && f_hi < 0.; ++k) { x_lo = x_hi; f_lo = f_hi; u_lo = u_hi; x_hi += 2.3; f_hi = weight_at(x_hi, u_hi); }
+  if(f_lo > 0. || f_hi < 0.)
+    throw Solver_failure_error("could not reach the requested alignment weight");
+  int side = 0;
+  double true_lo = f_lo, true_hi = f_hi;  // f_lo, f_hi are halved by the Illinois rule
+  for(int it = 0; it < 200; ++it)
+  {
+    if(std::abs(true_lo) <= 1e-10 || std::abs(true_hi) <= 1e-10 || x_hi - x_lo < 1e-14 * (1. + std::abs(x_lo)))
+      break;
+    const double x = (x_lo * f_hi - x_hi * f_lo) / (f_hi - f_lo);
+    Complex_vector ux;
+    const double fx = weight_at(x, ux);
+    if(fx < 0.)
+    {
+      x_lo = x; f_lo = fx; true_lo = fx; u_lo = ux;
+      if(side == -1) f_hi /= 2.;
+      side = -1;
+    }
+    else
+    {
+      x_hi = x; f_hi = fx; true_hi = fx; u_hi = ux;
+      if(side == 1) f_lo /= 2.;
+      side = 1;
+    }
+  }
+  const bool take_lo = std::abs(true_lo) < std::abs(true_hi);
+  u = take_lo ? u_lo : u_hi;
+  return lambda_1 - std::exp(take_lo ? x_lo : x_hi);
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H

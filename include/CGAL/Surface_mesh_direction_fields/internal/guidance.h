@@ -1,0 +1,126 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+// Guidance fields, as coefficient vectors in the n-th power representation
+// (method.md, section 6):
+//  * the pairing vector of the discrete Hopf differential (principal curvature);
+//  * a 3D tangent vector per vertex (user guidance), mapped to coefficients by
+//    the exact inverse of the layout of extrinsic_directions.h;
+//  * the directions tangent or normal to the boundary at boundary vertices.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// Signed dihedral angle of the side of corner 3f+c: the angle between the
+// normals of its two faces, positive on a convex edge; 0 on the border.
+inline double dihedral_angle(const Indexed_mesh& m, std::size_t corner)
+{
+  const std::size_t twin = m.twin_corner[corner];
+  if(twin == no_index) return 0.;
+  auto face_normal = [&](std::size_t f) {
+    const auto& t = m.faces[f];
+    return normalized(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+  };
+  const Vec3 n1 = face_normal(corner / 3), n2 = face_normal(twin / 3);
+  const Vec3 e = normalized(m.points[m.faces[corner / 3][(corner % 3 + 1) % 3]] - m.points[m.vertex_of_corner(corner)]);
+  return std::atan2(dot(cross(n1, n2), e), dot(n1, n2));
+}
+
+// The pairing of the Hopf differential with the basis sections of a line field
+// (n = 2): q~_i = -1/4 sum over the edges e at i of exp(2 i theta_i(e)) beta_e |e|.
+// Each edge at i is the first side of exactly one corner at i, except a border
+// edge, whose dihedral angle is zero anyway.
+inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexed_mesh& m, const Tangent_spaces& ts)
+{
+  std::vector<std::complex<double> > q(m.number_of_vertices(), std::complex<double>(0., 0.));
+  for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
+  {
+    const double beta = dihedral_angle(m, corner);
+    if(beta == 0.) continue;
+    q[m.vertex_of_corner(corner)] += -0.25 * beta * ts.side_length[corner] * std::polar(1., 2. * ts.corner_theta[corner]);
+  }
+  return q;
+}
+
+// The coefficient (n-th power representation) of a 3D vector at vertex v:
+// |w| exp(i n phi), where phi is the rescaled angle whose layout by
+// tangent_direction() has the direction of w projected to the tangent plane.
+inline std::complex<double> tangent_coefficient(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
+                                                const Vec3& vector, int degree, const Vec3& normal)
+{
+  const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
+  const Vec3 w = vector - dot(vector, normal) * normal;
+  const double length = norm(w);
+  if(begin == end || !(length > 0.)) return std::complex<double>(0., 0.);
+  const Vec3 plane_normal = cross(w, normal);  // the vectors projecting onto the line of w lie in span(w, N)
+  double best_phi = 0., best_error = 1e300;
+  for(std::size_t k = begin; k < end; ++k)
+  {
+    const std::size_t corner = m.fan_corners[k];
+    const auto& t = m.faces[corner / 3];
+    const int c = static_cast<int>(corner % 3);
+    const Vec3& p = m.points[t[c]];
+    const Vec3 e1 = m.points[t[(c + 1) % 3]] - p, e2 = m.points[t[(c + 2) % 3]] - p;
+    const Vec3 face_normal = cross(e1, e2);
+    Vec3 d = cross(face_normal, plane_normal);  // in the face's plane and in span(w, N)
+    if(!(norm(d) > 0.)) continue;
+    if(dot(d, w) < 0.) d = -1. * d;
+    const Vec3 x = normalized(e1);
+    const Vec3 y = normalized(e2 - dot(e2, x) * x);
+    const double psi = std::atan2(dot(d, y), dot(d, x));
+    const double width = ts.corner_angle[corner];
+    // distance (in face angle) outside [0, width]; 0 inside
+    const double error = psi < 0. ? -psi : (psi > width ? psi - width : 0.);
+    if(error < best_error)
+    {
+      best_error = error;
+      best_phi = ts.corner_theta[corner] + ts.angle_scale[v] * (std::min)((std::max)(psi, 0.), width);
+      if(error == 0.) break;
+    }
+  }
+  return std::polar(length, degree * best_phi);
+}
+
+// Unit coefficients of the direction tangent (or normal) to the boundary at a
+// boundary vertex. The fan of a boundary vertex starts on the outgoing
+// boundary edge (rescaled angle 0) and ends on the incoming one (angle Theta,
+// its angle sum); the boundary continues at angle Theta - pi, and the tangent
+// is the mean (Theta - pi) / 2 of the two, the inward normal Theta / 2.
+inline std::complex<double> boundary_coefficient(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
+                                                 int degree, bool normal)
+{
+  double theta = 0.;
+  for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
+    theta += ts.corner_angle[m.fan_corners[k]];  // s = 1 on the boundary
+  const double phi = normal ? 0.5 * theta : 0.5 * (theta - CGAL_PI);
+  return std::polar(1., degree * phi);
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
