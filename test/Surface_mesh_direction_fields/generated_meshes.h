@@ -73,6 +73,29 @@ void make_torus(Mesh& mesh, double R, double r, int nu, int nv)
     }
 }
 
+// Open circular cylinder of radius R around the z axis, z in [0, height]:
+// `nu` vertices per ring, `nv` + 1 rings, each quad split along alternating
+// diagonals.
+template <typename Mesh>
+void make_cylinder(Mesh& mesh, double R, double height, int nu, int nv)
+{
+  typedef typename Mesh::Point Point;
+  const double pi = 3.14159265358979323846;
+  std::vector<typename Mesh::Vertex_index> vs;
+  for(int j = 0; j <= nv; ++j)
+    for(int i = 0; i < nu; ++i)
+      vs.push_back(mesh.add_vertex(Point(R * std::cos(2 * pi * i / nu), R * std::sin(2 * pi * i / nu), height * j / nv)));
+  auto id = [&](int i, int j) { return vs[j * nu + (i + nu) % nu]; };
+  for(int j = 0; j < nv; ++j)
+    for(int i = 0; i < nu; ++i)
+    {
+      if((i + j) % 2 == 0)
+      { mesh.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1)); mesh.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1)); }
+      else
+      { mesh.add_face(id(i, j), id(i + 1, j), id(i, j + 1)); mesh.add_face(id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)); }
+    }
+}
+
 // Flat disk of radius `radius` in the plane z = 0: a center and `rings`
 // concentric rings, ring k having 6k vertices, triangulated ring to ring.
 template <typename Mesh>

@@ -505,10 +505,14 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
     if(aligned || constrained)
     {
       const internal::Complex_vector Mq = M * q;
+      const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
+      // The default lambda_t is 0, as in the paper, unless lambda_1 is (nearly) 0
+      // (a flat or developable component), where 0 is not admissible.
       double lambda = lambda_requested;
+      if(aligned && !lambda_given)
+        lambda = (std::min)(0., report.eigenvalue - 1e-6 * sigma);
       if(aligned && weight_given)
       {
-        const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
         std::size_t evaluations = 0;
         lambda = internal::find_lambda_for_weight(A, M, Mq, local_constraints, report.eigenvalue, weight_requested,
                                                   sigma, solver, field, evaluations);

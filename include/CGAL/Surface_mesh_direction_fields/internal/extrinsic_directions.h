@@ -25,7 +25,9 @@
 // Back to 3D (method.md, section 8): the coefficient u_i (n-th power, rescaled
 // angles from X_i) becomes a unit vector orthogonal to the vertex normal.
 //
-// 1. phi = arg(u_i) / n is a rescaled angle from X_i in [0, 2 pi).
+// 1. phi = arg(u_i) / n, taken in [0, 2 pi / n), is a rescaled angle from X_i;
+//    the other n - 1 directions are the rotations of the result by 2 pi k / n
+//    about the normal (documented convention; guidance.h inverts it exactly).
 // 2. The fan of corners covers the rescaled angles [0, s_i * angle sum); the
 //    corner containing phi is found and the vector is laid out in that face's
 //    plane, at the Euclidean angle (phi - theta_corner) / s_i from the corner's
@@ -83,8 +85,9 @@ inline Vec3 tangent_direction(const Indexed_mesh& m, const Tangent_spaces& ts, s
   const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
   if(begin == end)
     return Vec3{0., 0., 0.};  // isolated vertex
+  // the root in the first sector [0, 2 pi / n) from the reference direction
   double phi = std::arg(u) / degree;
-  if(phi < 0.) phi += two_pi;
+  if(phi < 0.) phi += two_pi / degree;
   const double s = ts.angle_scale[v];
 
   Vec3 w{0., 0., 0.};

@@ -65,40 +65,67 @@ inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexe
   return q;
 }
 
-// The coefficient (n-th power representation) of a 3D vector at vertex v:
-// |w| exp(i n phi), where phi is the rescaled angle whose layout by
-// tangent_direction() has the direction of w projected to the tangent plane.
-inline std::complex<double> tangent_coefficient(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
-                                                const Vec3& vector, int degree, const Vec3& normal)
+// The rescaled angle phi whose layout by tangent_direction() has the direction
+// of w (a nonzero tangent vector, orthogonal to the normal), and whether an
+// exact preimage exists (otherwise the nearest corner side is used).
+inline double rescaled_angle_of(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v, const Vec3& w,
+                                const Vec3& normal, double& error_out)
 {
-  const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
-  const Vec3 w = vector - dot(vector, normal) * normal;
-  const double length = norm(w);
-  if(begin == end || !(length > 0.)) return std::complex<double>(0., 0.);
   const Vec3 plane_normal = cross(w, normal);  // the vectors projecting onto the line of w lie in span(w, N)
   double best_phi = 0., best_error = 1e300;
-  for(std::size_t k = begin; k < end; ++k)
+  for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
   {
     const std::size_t corner = m.fan_corners[k];
     const auto& t = m.faces[corner / 3];
     const int c = static_cast<int>(corner % 3);
     const Vec3& p = m.points[t[c]];
     const Vec3 e1 = m.points[t[(c + 1) % 3]] - p, e2 = m.points[t[(c + 2) % 3]] - p;
-    const Vec3 face_normal = cross(e1, e2);
-    Vec3 d = cross(face_normal, plane_normal);  // in the face's plane and in span(w, N)
+    Vec3 d = cross(cross(e1, e2), plane_normal);  // in the face's plane and in span(w, N)
     if(!(norm(d) > 0.)) continue;
     if(dot(d, w) < 0.) d = -1. * d;
     const Vec3 x = normalized(e1);
     const Vec3 y = normalized(e2 - dot(e2, x) * x);
     const double psi = std::atan2(dot(d, y), dot(d, x));
     const double width = ts.corner_angle[corner];
-    // distance (in face angle) outside [0, width]; 0 inside
-    const double error = psi < 0. ? -psi : (psi > width ? psi - width : 0.);
+    const double error = psi < 0. ? -psi : (psi > width ? psi - width : 0.);  // outside [0, width]
     if(error < best_error)
     {
       best_error = error;
       best_phi = ts.corner_theta[corner] + ts.angle_scale[v] * (std::min)((std::max)(psi, 0.), width);
       if(error == 0.) break;
+    }
+  }
+  error_out = best_error;
+  return best_phi;
+}
+
+// The coefficient (n-th power representation) of a 3D vector at vertex v,
+// |w| exp(i n phi), consistent with the output convention: tangent_direction()
+// lays out the root phi_0 = arg(u) / n in [0, 2 pi / n), and the other n - 1
+// directions are its rotations by 2 pi k / n about the normal. So among the n
+// rotations of w (projected to the tangent plane) the one whose rescaled angle
+// falls in [0, 2 pi / n) is chosen: the output then contains w exactly.
+inline std::complex<double> tangent_coefficient(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
+                                                const Vec3& vector, int degree, const Vec3& normal)
+{
+  const Vec3 w = vector - dot(vector, normal) * normal;
+  const double length = norm(w);
+  if(m.fan_size(v) == 0 || !(length > 0.)) return std::complex<double>(0., 0.);
+  const double sector = 2. * CGAL_PI / degree;
+  const Vec3 w_perp = cross(normal, w);
+  double best_phi = 0., best_distance = 1e300;
+  for(int k = 0; k < degree; ++k)
+  {
+    const Vec3 wk = std::cos(k * sector) * w + std::sin(k * sector) * w_perp;
+    double error;
+    const double phi = rescaled_angle_of(m, ts, v, wk, normal, error);
+    // distance of phi to the sector [0, 2 pi / n), and to an exact preimage
+    const double distance = (phi < 0. ? -phi : (phi >= sector ? phi - sector : 0.)) + error;
+    if(distance < best_distance)
+    {
+      best_distance = distance;
+      best_phi = phi;
+      if(distance == 0.) break;
     }
   }
   return std::polar(length, degree * best_phi);
