@@ -205,7 +205,37 @@ assert d["mesh_faces"] == 4 and d["euler_characteristic"] == 1 and d["mollificat
 assert d["singular_faces"] == 0 and abs(d["eigenvalues"][0]) < 1e-8
 EOF2
 
-# 6. A shared mesh, with a picture.
+# 6. Alignment options.
+"$bin" "$out/cube_quads.off" --degree 4 --align curvature --alignment-weight 0.7 --json > "$out/align.json"
+check "--align curvature --alignment-weight" python_checks "$out/align.json" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert abs(d["alignment_weight"] - 0.7) < 1e-6 and d["lambda"] < d["eigenvalue_bound"], d
+assert d["index_sum"] == 8
+EOF2
+printf '1 0 0\n0 0 0\n1 0 0\n0 0 0\n0 1 0\n0 1 0\n' > "$out/guidance6.txt"
+"$bin" "$out/octahedron.off" --degree 2 --guidance "$out/guidance6.txt" --lambda -5 --json > "$out/guided.json"
+check "--guidance FILE --lambda" python_checks "$out/guided.json" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["lambda"] == -5 and 0 < d["alignment_weight"] < 1 and d["index_sum"] == 4
+EOF2
+"$bin" "$out/ell.off" --degree 4 --constrain-boundary tangent --directions "$out/ell_tangent.txt" --json > "$out/ell_tangent.json"
+check "--constrain-boundary tangent" python_checks "$out/ell_tangent.txt" <<'EOF2'
+import math, sys
+d = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip()]
+L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]  # every vertex is a boundary corner of the L
+for i, v in enumerate(d):
+    # the tangent at a boundary vertex: the bisector of its two boundary edges, unit(next) - unit(previous)
+    p, a, b = L[i], L[(i + 1) % 6], L[(i - 1) % 6]
+    ua = [a[0] - p[0], a[1] - p[1]]; ub = [b[0] - p[0], b[1] - p[1]]
+    la, lb = math.hypot(*ua), math.hypot(*ub)
+    t = [ua[0] / la - ub[0] / lb, ua[1] / la - ub[1] / lb]
+    delta = math.atan2(v[1], v[0]) - math.atan2(t[1], t[0])
+    assert abs(math.remainder(4 * delta, 2 * math.pi)) < 1e-9, (i, v, t)
+EOF2
+
+# 7. A shared mesh, with a picture.
 if [ -n "$shared" ] && [ -f "$shared/sphere_oded.off" ]; then
   "$bin" "$shared/sphere_oded.off" --degree 4 --png "$out/sphere.png" --json > "$out/sphere.json"
   check "sphere_oded run" test $? -eq 0
@@ -231,7 +261,7 @@ else
   echo "SKIPPED shared-mesh checks: ../shared/data/meshes not found"
 fi
 
-# 7. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
+# 8. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
 bad() {  # bad DESCRIPTION ARGS...
   local what=$1
   shift
@@ -250,6 +280,12 @@ bad "unknown option" "$out/octahedron.off" --frobnicate
 bad "truncated file" "$out/truncated.off"
 bad "NaN coordinate" "$out/nan.off"
 bad "two meshes" "$out/octahedron.off" "$out/octahedron.off"
+bad "curvature alignment with odd n" "$out/octahedron.off" --degree 3 --align curvature
+bad "unknown alignment" "$out/octahedron.off" --align sideways
+bad "both lambda and t" "$out/octahedron.off" --align curvature --lambda -1 --alignment-weight 0.5
+bad "t outside (0, 1)" "$out/octahedron.off" --align curvature --alignment-weight 1.5
+bad "lambda above lambda_1" "$out/octahedron.off" --guidance "$out/guidance6.txt" --lambda 1e9
+bad "guidance of the wrong size" "$out/octahedron.off" --guidance "$out/sing4.txt"
 bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.txt"
 
 echo "command line: $passed passed, $failed failed"

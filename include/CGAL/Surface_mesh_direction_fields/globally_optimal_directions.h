@@ -234,6 +234,11 @@ orthogonal to the vertex normal; the field's other `n - 1` directions at `v`
 are the rotations of `d` by \f$ 2\pi k / n \f$, `k = 1, ..., n-1`, about the
 vertex normal.
 
+With a guidance field (`principal_curvature_alignment` or `vertex_guidance_map`)
+the field trades smoothness for alignment, controlled by `alignment_lambda` or
+`alignment_weight`; with `vertex_is_constrained_map` or `boundary_alignment`
+some directions are fixed. Both are linear solves instead of the eigenproblem.
+
 A face `f` is singular when the field turns by a non-zero multiple of
 \f$ 2\pi / n \f$ around it: its index is `k / n` for a non-zero integer `k`.
 On a closed component the integers `k` add up to `n` times its Euler
@@ -262,6 +267,60 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                           `0` Dirichlet, `1` holomorphic energy; larger `s` gives fewer singularities}
     \cgalParamType{`double`}
     \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{principal_curvature_alignment}
+    \cgalParamDescription{aligns the field with the principal curvature directions: the guidance `q` is the discrete
+                          Hopf differential (a line field along the maximum curvature direction, whose magnitude is
+                          the difference of the principal curvatures, so that umbilic regions are left to smoothness),
+                          raised to the power `n/2`; `MINIMUM` takes the orthogonal line field. For `n = 4` both
+                          values give the same crosses. Requires an even `n`.}
+    \cgalParamType{`CGAL::Surface_mesh_direction_fields::Principal_curvature_alignment`}
+    \cgalParamDefault{`Principal_curvature_alignment::NONE`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_guidance_map}
+    \cgalParamDescription{a guidance vector per vertex, projected to the tangent plane; its length is its weight and
+                          the zero vector means no preference. It is added to the curvature guidance if both are given.
+                          Sparse guidance (a few strokes) is spread smoothly by the solve.}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `GT::Vector_3` as value type}
+    \cgalParamDefault{no user guidance}
+  \cgalParamNEnd
+  \cgalParamNBegin{alignment_lambda}
+    \cgalParamDescription{with a guidance `q` (normalized to \f$ \|q\|_M = 1 \f$), the field is the solution of
+                          \f$ (A - \lambda_t M) u = M q \f$, normalized. \f$ \lambda_t \to -\infty \f$ gives the
+                          guidance itself, \f$ \lambda_t \to \lambda_1 \f$ the smoothest field; it must be below
+                          the smallest eigenvalue \f$ \lambda_1 \f$ of the component. With constraints and no guidance,
+                          the value used for \f$ (A - \lambda_t M)_{FF} \f$.}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`, as in the paper (or just below \f$ \lambda_1 \f$ if \f$ \lambda_1 \f$ is about 0, as on
+                      flat and developable surfaces)}
+  \cgalParamNEnd
+  \cgalParamNBegin{alignment_weight}
+    \cgalParamDescription{instead of \f$ \lambda_t \f$: the alignment weight \f$ t = 1/(1 + \|u\|_M) \in (0, 1) \f$ to
+                          reach (close to 1: follow the guidance; close to 0: be smooth); \f$ \lambda_t \f$ is found by
+                          root finding (each step is one factorization), per component.}
+    \cgalParamType{`double` in \f$ (0, 1) \f$}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{the vertices whose direction is prescribed by `vertex_constrained_direction_map` (hard
+                          constraints); the other values are the smoothest (or aligned) ones given these}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{no constrained vertex}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_constrained_direction_map}
+    \cgalParamDescription{the prescribed direction of each constrained vertex (projected to the tangent plane; its
+                          length does not matter); the output at that vertex is one of its `n` rotations}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `GT::Vector_3` as value type}
+    \cgalParamDefault{none; required with `vertex_is_constrained_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{boundary_alignment}
+    \cgalParamDescription{constrains every boundary vertex to a direction tangent (or normal) to the boundary: the
+                          bisector of the two boundary edges (or of the interior angle)}
+    \cgalParamType{`CGAL::Surface_mesh_direction_fields::Boundary_alignment`}
+    \cgalParamDefault{`Boundary_alignment::NONE`}
   \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
@@ -351,11 +410,15 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
 \cgalNamedParamsEnd
 
 \returns a `Direction_field_result`: per component, the smallest eigenvalue, the iterations used,
-the final residual, the Euler characteristic and the index sum; and the timings.
+the final residual, the Euler characteristic and the index sum, and for aligned or constrained fields
+the \f$ \lambda_t \f$ used and the alignment weight reached; and the timings.
 
 \throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex or a
-        non-finite coordinate, a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, or if
-        `s` is outside \f$ [-1, 1] \f$.
+        non-finite coordinate, a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, if
+        `s` is outside \f$ [-1, 1] \f$, for curvature alignment with an odd `n`, if
+        \f$ \lambda_t \ge \lambda_1 \f$, if `t` is not in \f$ (0, 1) \f$ or given without guidance, if both
+        \f$ \lambda_t \f$ and `t` are given, if a guidance vector is not finite, or if a constrained direction
+        is zero or normal to the surface.
         Nothing is written to the output maps then.
 \throws Solver_failure_error if the sparse solver fails to factor the shifted energy matrix.
 
