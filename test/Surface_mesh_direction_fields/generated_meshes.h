@@ -50,6 +50,18 @@ void make_icosphere(Mesh& mesh, int subdivisions, double radius = 1.)
   for(auto& f : tris) mesh.add_face(vs[f[0]], vs[f[1]], vs[f[2]]);
 }
 
+// A sphere with bumps: no symmetry, so that its smallest eigenvalue is simple.
+template <typename Mesh>
+void make_lumpy_sphere(Mesh& mesh, int subdivisions)
+{
+  make_icosphere(mesh, subdivisions);
+  for(auto v : mesh.vertices())
+  {
+    const auto p = mesh.point(v) - CGAL::ORIGIN;
+    mesh.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 0.4) * std::cos(2. * p.y() + p.z())) * p;
+  }
+}
+
 // Torus of revolution around z: major radius R, minor radius r.
 template <typename Mesh>
 void make_torus(Mesh& mesh, double R, double r, int nu, int nv)

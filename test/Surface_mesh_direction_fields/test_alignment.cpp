@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -33,46 +34,6 @@ typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace params = CGAL::parameters;
 typedef std::vector<std::pair<Face_index, int> > Singularities;
-
-// angle between two n-directions (modulo 2 pi / n)
-static double angle_mod(const Vector_3& a, const Vector_3& b, int n)
-{
-  const double c = a * b, s = std::sqrt(CGAL::cross_product(a, b).squared_length());
-  return std::abs(std::remainder(n * std::atan2(s, c), 2. * CGAL_PI)) / n;
-}
-
-static Mesh::Property_map<Vertex_index, Vector_3> direction_map(Mesh& mesh, const std::string& name = "v:direction")
-{
-  return mesh.add_property_map<Vertex_index, Vector_3>(name, CGAL::NULL_VECTOR).first;
-}
-
-static std::vector<Vector_3> angle_weighted_normals(const Mesh& mesh)
-{
-  std::vector<Vector_3> normals(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
-  for(Face_index f : mesh.faces())
-  {
-    auto h = mesh.halfedge(f);
-    for(int c = 0; c < 3; ++c, h = mesh.next(h))
-    {
-      const Point_3& p = mesh.point(mesh.source(h));
-      const Vector_3 a = mesh.point(mesh.target(h)) - p, b = mesh.point(mesh.source(mesh.prev(h))) - p;
-      const Vector_3 n = CGAL::cross_product(a, b);
-      normals[mesh.source(h)] = normals[mesh.source(h)] + std::atan2(std::sqrt(n.squared_length()), a * b) * n / std::sqrt(n.squared_length());
-    }
-  }
-  for(Vector_3& n : normals) n = n / std::sqrt(n.squared_length());
-  return normals;
-}
-
-static void make_lumpy_sphere(Mesh& mesh, int subdivisions)
-{
-  make_icosphere(mesh, subdivisions);
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Vector_3 p = mesh.point(v) - CGAL::ORIGIN;
-    mesh.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 0.4) * std::cos(2. * p.y() + p.z())) * p;
-  }
-}
 
 static void check_limits_and_weight(Test_report& report)
 {
@@ -311,15 +272,6 @@ static void check_constraints(Test_report& report)
     if(cylinder.is_border(v))
       worst = (std::max)(worst, angle_mod(d[v], Vector_3(-cylinder.point(v).y(), cylinder.point(v).x(), 0.), 2));
   report.check(worst < 1e-9, "cylinder: boundary-aligned field tangent to the rims (" + std::to_string(worst) + ")");
-}
-
-template <typename F>
-static bool throws_invalid_input(F f)
-{
-  try { f(); }
-  catch(const SMDF::Invalid_input_error& e) { std::cout << "  expected error: " << e.what() << "\n"; return true; }
-  catch(...) { return false; }
-  return false;
 }
 
 static void check_errors(Test_report& report)

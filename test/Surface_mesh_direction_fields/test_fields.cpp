@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -44,33 +45,6 @@ namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace params = CGAL::parameters;
 
 typedef std::vector<std::pair<Face_index, int> > Singularities;
-
-static Mesh::Property_map<Vertex_index, Vector_3> direction_map(Mesh& mesh)
-{
-  return mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
-}
-
-// Angle-weighted vertex normals, computed here independently of the package.
-static std::vector<Vector_3> angle_weighted_normals(const Mesh& mesh)
-{
-  std::vector<Vector_3> normals(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
-  for(Face_index f : mesh.faces())
-  {
-    auto h = mesh.halfedge(f);
-    for(int c = 0; c < 3; ++c, h = mesh.next(h))
-    {
-      const Point_3& p = mesh.point(mesh.source(h));
-      const Vector_3 a = mesh.point(mesh.target(h)) - p;
-      const Vector_3 b = mesh.point(mesh.source(mesh.prev(h))) - p;
-      const Vector_3 n = CGAL::cross_product(a, b);
-      const double angle = std::atan2(std::sqrt(n.squared_length()), a * b);
-      normals[mesh.source(h)] = normals[mesh.source(h)] + angle * n / std::sqrt(n.squared_length());
-    }
-  }
-  for(Vector_3& n : normals)
-    if(n != CGAL::NULL_VECTOR) n = n / std::sqrt(n.squared_length());
-  return normals;
-}
 
 // Unit length, finite, orthogonal to the given normals (1e-9).
 template <typename Directions>
@@ -229,15 +203,6 @@ static void check_invariance(Test_report& report, const Mesh& base, const std::s
     report.check(r1.index_sum == r0.index_sum && r1.number_of_singular_faces == r0.number_of_singular_faces,
                  name + ", " + m.label + ": same singularities");
   }
-}
-
-template <typename F>
-static bool throws_invalid_input(F f)
-{
-  try { f(); }
-  catch(const SMDF::Invalid_input_error& e) { std::cout << "  expected error: " << e.what() << "\n"; return true; }
-  catch(...) { return false; }
-  return false;
 }
 
 static void check_bad_input(Test_report& report)

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -72,23 +73,6 @@ struct Minimal_traits
   Compute_z_3 compute_z_3_object() const { return Compute_z_3(); }
   Construct_vector_3 construct_vector_3_object() const { return Construct_vector_3(); }
 };
-
-// A surface without symmetry, so that its smallest eigenvalue is simple.
-static void make_lumpy_sphere(Mesh& mesh, int subdivisions)
-{
-  make_icosphere(mesh, subdivisions);
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Vector_3 p = mesh.point(v) - CGAL::ORIGIN;
-    mesh.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 0.4) * std::cos(2. * p.y() + p.z())) * p;
-  }
-}
-
-static double angle_mod(const Vector_3& a, const Vector_3& b, int n)  // angle between n-directions
-{
-  const double c = a * b, s = std::sqrt(CGAL::cross_product(a, b).squared_length());
-  return std::abs(std::remainder(n * std::atan2(s, c), 2. * CGAL_PI)) / n;
-}
 
 static void check_models(Test_report& report)
 {
