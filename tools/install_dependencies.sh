@@ -2,7 +2,8 @@
 # Installs the Debian packages the project needs, only those that are missing.
 #   usage: install_dependencies.sh [main|tests]
 set -euo pipefail
-packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev)
+packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
+          libsuitesparse-dev libopenblas-dev)
 if [ "${1:-main}" = tests ]; then
   packages+=(doxygen python3 libopenmesh-dev)
 fi

@@ -343,20 +343,24 @@ static void check_models_and_solvers(Test_report& report)
                poly_sing.size() == rp.number_of_singular_faces && poly_dir_storage.size() == poly.size_of_vertices(),
                "Polyhedron_3 gives the same eigenvalue and singularities as Surface_mesh");
 
-  // Another sparse solver: Eigen's simplicial LL^T.
-  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<std::complex<double> > > > LLT;
-  auto dir2 = mesh.add_property_map<Vertex_index, Vector_3>("v:direction_llt", CGAL::NULL_VECTOR).first;
-  const SMDF::Direction_field_result rl = SMDF::compute_globally_optimal_directions(
-    mesh, dir2, params::degree(4).sparse_linear_solver(LLT()));
-  double worst = 0.;
-  for(Vertex_index v : mesh.vertices())
-  {
-    // same seed, same field up to the solver's rounding; compare the crosses (mod 90 degrees)
-    const double c = dir[v] * dir2[v], s = std::sqrt(CGAL::cross_product(dir[v], dir2[v]).squared_length());
-    worst = (std::max)(worst, std::abs(std::remainder(4. * std::atan2(s, c), 2. * CGAL_PI)) / 4.);
-  }
-  report.check(std::abs(rl.components[0].eigenvalue - r.components[0].eigenvalue) <= 1e-10 * r.components[0].eigenvalue &&
-               worst < 1e-6, "sparse_linear_solver(SimplicialLLT) gives the same field (" + std::to_string(worst) + " rad)");
+  // Other sparse solvers (the default is CHOLMOD when the build found it):
+  // the same field up to the solver tolerance.
+  auto compare_with = [&](auto solver, const std::string& name) {
+    auto dir2 = mesh.add_property_map<Vertex_index, Vector_3>("v:direction_" + name, CGAL::NULL_VECTOR).first;
+    const SMDF::Direction_field_result rl = SMDF::compute_globally_optimal_directions(
+      mesh, dir2, params::degree(4).sparse_linear_solver(solver));
+    double worst = 0.;
+    for(Vertex_index v : mesh.vertices()) worst = (std::max)(worst, angle_mod(dir[v], dir2[v], 4));
+    report.check(std::abs(rl.components[0].eigenvalue - r.components[0].eigenvalue) <= 1e-10 * r.components[0].eigenvalue &&
+                 worst < 1e-6, "sparse_linear_solver(" + name + ") gives the same field (" + std::to_string(worst) + " rad)");
+  };
+  typedef Eigen::SparseMatrix<std::complex<double> > Complex_matrix;
+  compare_with(CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Complex_matrix> >(), "SimplicialLLT");
+  compare_with(CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Complex_matrix> >(), "SimplicialLDLT");
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+  std::cout << "  default solver: CHOLMOD supernodal\n";
+  compare_with(CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Complex_matrix> >(), "CholmodSupernodalLLT");
+#endif
 }
 
 int main()
