@@ -300,9 +300,10 @@ int main(int argc, char** argv)
       return SMDF::compute_globally_optimal_directions(mesh, directions,
                                                        np.vertex_guidance_map(CGAL::make_property_map(guidance)));
     };
+    // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
     const SMDF::Direction_field_result result =
       o.weight_given ? with_guidance(base.alignment_weight(o.weight))
-                     : with_guidance(base.alignment_lambda(o.lambda));
+      : o.lambda_given ? with_guidance(base.alignment_lambda(o.lambda)) : with_guidance(base);
     if(!o.directions.empty())
     {
       std::ofstream os;

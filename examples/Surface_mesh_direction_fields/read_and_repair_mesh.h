@@ -293,7 +293,7 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
   }
   if(out.mesh.number_of_faces() == 0) throw Mesh_input_error("'" + path + "' holds no usable face");
   out.file_vertex_of_vertex.resize(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i) out.file_vertex_of_vertex[i] = i < out.file_vertices ? i : i;
+  for(std::size_t i = 0; i < points.size(); ++i) out.file_vertex_of_vertex[i] = i;  // copies are fixed below
   for(const auto& oc : copies)
     if(oc.second < points.size()) out.file_vertex_of_vertex[oc.second] = out.file_vertex_of_vertex[oc.first];
   out.vertex_of_file_vertex.resize(out.file_vertices);

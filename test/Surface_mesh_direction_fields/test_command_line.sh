@@ -235,6 +235,14 @@ for i, v in enumerate(d):
     assert abs(math.remainder(4 * delta, 2 * math.pi)) < 1e-9, (i, v, t)
 EOF2
 
+# curvature guidance on a flat mesh (lambda_1 = 0): the default lambda_t adapts
+"$bin" "$out/ell.off" --degree 2 --align curvature --json > "$out/flat_align.json"
+check "--align on a flat mesh" python_checks "$out/flat_align.json" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["singular_faces"] == 0
+EOF2
+
 # 7. A shared mesh, with a picture.
 if [ -n "$shared" ] && [ -f "$shared/sphere_oded.off" ]; then
   "$bin" "$shared/sphere_oded.off" --degree 4 --png "$out/sphere.png" --json > "$out/sphere.json"
