@@ -1,17 +1,29 @@
 // Runs compute_globally_optimal_directions() over a list of meshes and prints
-// one row per mesh: sizes, eigenvalue, singularities, iterations, the time of
-// each phase, and the peak memory of the process so far; then the same as CSV.
+// one row per mesh and backend: sizes, eigenvalue, singularities, iterations,
+// the time of each phase, the peak memory of the computation; then the same
+// as CSV. Also times a second field on the same mesh with the class
+// Globally_optimal_direction_field (another s: no mesh work, no symbolic
+// analysis).
 //
-//   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R] [MESH...]
-// With no mesh: every mesh of ../shared/data/meshes.
+//   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R]
+//                                     [--backend default|ldlt|both] [--subdivide K] [--csv FILE] [MESH...]
+// A mesh given as FILE@K is FILE after K steps of Loop subdivision (4^K times the faces).
+// With no mesh: every mesh of ../shared/data/meshes, then nefertiti_sub4.off@1 (1.6 million faces).
+//
+// Peak memory: the kernel's high-water mark of the resident set (VmHWM), reset
+// before each run (writing 5 to /proc/self/clear_refs), so it is the peak of
+// that run, the mesh itself included; "KB/V" divides it by |V|.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/subdivision_method_3.h>
 
-#include <sys/resource.h>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -20,22 +32,68 @@
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double> > > > Ldlt_solver;
 
 #ifndef SMDF_SHARED_MESH_DIR
 #define SMDF_SHARED_MESH_DIR ""
 #endif
 
-static double peak_memory_mb()
+// VmHWM or VmRSS of this process, in MB (0 if /proc is not there).
+static double proc_status_mb(const std::string& key)
 {
-  rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.;  // kilobytes on Linux
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while(std::getline(in, line))
+    if(line.compare(0, key.size(), key) == 0)
+      return std::stod(line.substr(key.size() + 1)) / 1024.;  // kB
+  return 0.;
+}
+
+static void reset_peak_memory()
+{
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";  // Linux >= 4.0: reset the peak RSS to the current RSS
+}
+
+struct Run
+{
+  std::string mesh, backend;
+  std::size_t vertices = 0, faces = 0;
+  SMDF::Direction_field_result result;
+  double peak_mb = 0., again_ms = 0.;
+};
+
+template <typename Solver>
+Run run(const Mesh& mesh, const std::string& name, const std::string& backend, int degree, double s, int repeat)
+{
+  Run r;
+  r.mesh = name;
+  r.backend = backend;
+  r.vertices = mesh.number_of_vertices();
+  r.faces = mesh.number_of_faces();
+  std::vector<Kernel::Vector_3> directions(mesh.number_of_vertices());
+  auto dir = CGAL::make_property_map(directions);
+  for(int k = 0; k < repeat; ++k)  // keep the fastest run
+  {
+    reset_peak_memory();
+    SMDF::Direction_field_result res = SMDF::compute_globally_optimal_directions(
+      mesh, dir, CGAL::parameters::degree(degree).smoothness_parameter(s).sparse_linear_solver(Solver()));
+    const double peak = proc_status_mb("VmHWM:");
+    if(k == 0 || res.timings.total_ms < r.result.timings.total_ms) { r.result = res; r.peak_mb = peak; }
+  }
+  // The class for repeated work: a second field (another s) on the same mesh.
+  SMDF::Globally_optimal_direction_field<Mesh, Kernel, Solver> field(mesh);
+  field.compute(dir, CGAL::parameters::degree(degree).smoothness_parameter(s));
+  r.again_ms = field.compute(dir, CGAL::parameters::degree(degree).smoothness_parameter(s == 0. ? 0.5 : 0.))
+                 .timings.total_ms;
+  return r;
 }
 
 int main(int argc, char** argv)
 {
   int degree = 4, repeat = 1;
   double s = 0.;
+  std::string backend = "default", csv_file;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
@@ -43,6 +101,9 @@ int main(int argc, char** argv)
     if(a == "--degree" && i + 1 < argc) degree = std::stoi(argv[++i]);
     else if(a == "--s" && i + 1 < argc) s = std::stod(argv[++i]);
     else if(a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
+    else if(a == "--backend" && i + 1 < argc) backend = argv[++i];
+    else if(a == "--csv" && i + 1 < argc) csv_file = argv[++i];
+    else if(a == "--help") { std::cout << "see the comment at the top of benchmark_direction_fields.cpp\n"; return 0; }
     else meshes.push_back(a);
   }
   if(meshes.empty())
@@ -51,40 +112,76 @@ int main(int argc, char** argv)
     if(dir.empty()) { std::cerr << "no mesh given and ../shared/data/meshes not found\n"; return 1; }
     for(const char* name : {"eight.off", "sphere_oded.off", "bones.off", "torus_oded.off", "cow.off", "spot.off",
                             "fertility.off", "fandisk.off", "blade.off", "plane_holes.off", "camelhead.off",
-                            "stanford_bunny_open.off", "nefertiti.off", "nefertiti_sub4.off"})
+                            "stanford_bunny_open.off", "nefertiti.off", "nefertiti_sub4.off", "nefertiti_sub4.off@1"})
       meshes.push_back(dir + "/" + name);
+  }
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+  const std::string default_name = "cholmod";
+#else
+  const std::string default_name = "ldlt";
+#endif
+
+  std::vector<Run> runs;
+  std::printf("%-22s %8s %8s %2s %-7s %11s %5s %4s %4s %8s %8s %8s %8s %8s %7s %5s\n", "mesh", "|V|", "|F|", "n",
+              "backend", "eigenvalue", "sing", "sum", "iter", "setup", "factor", "solve", "total", "again", "peakMB",
+              "KB/V");
+  for(const std::string& spec : meshes)
+  {
+    const std::size_t at = spec.find('@');
+    const std::string path = spec.substr(0, at);
+    const int steps = (at == std::string::npos) ? 0 : std::stoi(spec.substr(at + 1));
+    Mesh mesh;
+    if(!CGAL::IO::read_polygon_mesh(path, mesh)) { std::cerr << "cannot read " << path << "\n"; continue; }
+    if(steps > 0) CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(steps));
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    if(steps > 0) name += "@" + std::to_string(steps);
+
+    std::vector<Run> rows;
+    if(backend == "default" || backend == "both")
+      rows.push_back(run<SMDF::Default_direction_field_solver>(mesh, name, default_name, degree, s, repeat));
+    if(backend == "ldlt" || (backend == "both" && default_name != "ldlt"))
+      rows.push_back(run<Ldlt_solver>(mesh, name, "ldlt", degree, s, repeat));
+    for(const Run& r : rows)
+    {
+      const SMDF::Direction_field_result& b = r.result;
+      std::printf("%-22s %8zu %8zu %2d %-7s %11.6g %5zu %4d %4zu %8.1f %8.1f %8.1f %8.1f %8.1f %7.1f %5.2f\n",
+                  r.mesh.c_str(), r.vertices, r.faces, degree, r.backend.c_str(),
+                  b.components.empty() ? 0. : b.components[0].eigenvalue, b.number_of_singular_faces, b.index_sum,
+                  b.iterations, b.timings.setup_ms, b.timings.factorization_ms, b.timings.solve_ms, b.timings.total_ms,
+                  r.again_ms, r.peak_mb, 1024. * r.peak_mb / static_cast<double>(r.vertices));
+      std::fflush(stdout);
+      runs.push_back(r);
+    }
   }
 
   std::ostringstream csv;
-  csv << "mesh,vertices,faces,components,degree,s,eigenvalue,singular_faces,index_sum,iterations,residual,"
-         "setup_ms,factorization_ms,solve_ms,total_ms,peak_memory_mb\n";
-  std::printf("%-24s %8s %8s %4s %3s %5s %13s %5s %6s %5s %9s %9s %9s %9s %8s\n", "mesh", "|V|", "|F|", "cc", "n",
-              "s", "eigenvalue", "sing", "sum", "iter", "setup", "factor", "solve", "total", "peak MB");
-  for(const std::string& path : meshes)
+  csv << "mesh,vertices,faces,components,degree,s,backend,eigenvalue,singular_faces,index_sum,iterations,residual,"
+         "setup_ms,factorization_ms,solve_ms,total_ms,again_ms,peak_memory_mb,peak_kb_per_vertex\n";
+  for(const Run& r : runs)
   {
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh(path, mesh)) { std::cerr << "cannot read " << path << "\n"; continue; }
-    auto dir = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:direction").first;
-    SMDF::Direction_field_result best;
-    for(int r = 0; r < repeat; ++r)  // keep the fastest run
-    {
-      SMDF::Direction_field_result res = SMDF::compute_globally_optimal_directions(
-        mesh, dir, CGAL::parameters::degree(degree).smoothness_parameter(s));
-      if(r == 0 || res.timings.total_ms < best.timings.total_ms) best = res;
-    }
-    const std::string name = path.substr(path.find_last_of('/') + 1);
-    const double peak = peak_memory_mb();
-    std::printf("%-24s %8zu %8zu %4zu %3d %5.2f %13.6g %5zu %6d %5zu %9.1f %9.1f %9.1f %9.1f %8.1f\n", name.c_str(),
-                std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), best.components.size(),
-                degree, s, best.components.empty() ? 0. : best.components[0].eigenvalue, best.number_of_singular_faces,
-                best.index_sum, best.iterations, best.timings.setup_ms, best.timings.factorization_ms,
-                best.timings.solve_ms, best.timings.total_ms, peak);
-    csv << name << "," << mesh.number_of_vertices() << "," << mesh.number_of_faces() << "," << best.components.size()
-        << "," << degree << "," << s << "," << (best.components.empty() ? 0. : best.components[0].eigenvalue) << ","
-        << best.number_of_singular_faces << "," << best.index_sum << "," << best.iterations << "," << best.residual
-        << "," << best.timings.setup_ms << "," << best.timings.factorization_ms << "," << best.timings.solve_ms << ","
-        << best.timings.total_ms << "," << peak << "\n";
+    const SMDF::Direction_field_result& b = r.result;
+    csv << r.mesh << "," << r.vertices << "," << r.faces << "," << b.components.size() << "," << degree << "," << s
+        << "," << r.backend << "," << (b.components.empty() ? 0. : b.components[0].eigenvalue) << ","
+        << b.number_of_singular_faces << "," << b.index_sum << "," << b.iterations << "," << b.residual << ","
+        << b.timings.setup_ms << "," << b.timings.factorization_ms << "," << b.timings.solve_ms << ","
+        << b.timings.total_ms << "," << r.again_ms << "," << r.peak_mb << ","
+        << 1024. * r.peak_mb / static_cast<double>(r.vertices) << "\n";
   }
   std::cout << "\n" << csv.str();
+  if(!csv_file.empty()) std::ofstream(csv_file) << csv.str();
+
+  // Scaling exponent: least-squares slope of log(total) against log(|F|) over
+  // the default backend's runs with at least 50,000 faces.
+  double sx = 0., sy = 0., sxx = 0., sxy = 0.;
+  int count = 0;
+  for(const Run& r : runs)
+    if(r.backend == runs.front().backend && r.faces >= 50000)
+    {
+      const double x = std::log(static_cast<double>(r.faces)), y = std::log(r.result.timings.total_ms);
+      sx += x; sy += y; sxx += x * x; sxy += x * y; ++count;
+    }
+  if(count >= 2)
+    std::cout << "\nscaling: total time ~ |F|^" << (count * sxy - sx * sy) / (count * sxx - sx * sx) << " ("
+              << count << " meshes with >= 50000 faces, backend " << runs.front().backend << ")\n";
   return 0;
 }

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_directions.h>
 
 #endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_H

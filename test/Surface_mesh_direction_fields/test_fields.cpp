@@ -30,6 +30,7 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <limits>
 #include <string>
 #include <utility>
@@ -315,6 +316,27 @@ static void check_components_and_outputs(Test_report& report)
 }
 
 // Another mesh model and another factorization give the same field.
+// A minimal model of SparseLinearAlgebraWithFactorTraits_d that is not
+// CGAL::Eigen_solver_traits (so the package takes its generic path).
+struct Generic_ldlt_solver
+{
+  typedef std::complex<double> NT;
+  typedef CGAL::Eigen_sparse_matrix<NT> Matrix;
+  typedef CGAL::Eigen_vector<NT> Vector;
+  std::shared_ptr<Eigen::SimplicialLDLT<Matrix::EigenType> > ldlt = std::make_shared<Eigen::SimplicialLDLT<Matrix::EigenType> >();
+  bool factor(const Matrix& A, NT& D)
+  {
+    D = NT(1.);
+    ldlt->compute(A.eigen_object());
+    return ldlt->info() == Eigen::Success;
+  }
+  bool linear_solver(const Vector& B, Vector& X)
+  {
+    X = ldlt->solve(B.eigen_object());
+    return ldlt->info() == Eigen::Success;
+  }
+};
+
 static void check_models_and_solvers(Test_report& report)
 {
   Mesh mesh;
@@ -361,6 +383,33 @@ static void check_models_and_solvers(Test_report& report)
   std::cout << "  default solver: CHOLMOD supernodal\n";
   compare_with(CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Complex_matrix> >(), "CholmodSupernodalLLT");
 #endif
+  // A model of the concept that is not CGAL::Eigen_solver_traits: the generic
+  // path (matrix copied, one right-hand side at a time).
+  compare_with(Generic_ldlt_solver(), "generic SparseLinearAlgebraWithFactorTraits_d model");
+
+  // The class for repeated work: every call, in any order of (n, s), gives the
+  // field of a fresh free-function call (kept connection, matrices and
+  // symbolic analyses must not leak from one call into the next).
+  SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
+  bool same = true;
+  std::string worst_case;
+  for(const auto& ns : std::vector<std::pair<int, double> >{{4, 0.}, {4, 0.5}, {2, 0.5}, {4, 0.}, {1, -1.}, {4, 0.}})
+  {
+    auto d1 = mesh.add_property_map<Vertex_index, Vector_3>("v:class_a", CGAL::NULL_VECTOR).first;
+    auto d2 = mesh.add_property_map<Vertex_index, Vector_3>("v:class_b", CGAL::NULL_VECTOR).first;
+    const auto np = params::degree(ns.first).smoothness_parameter(ns.second);
+    const SMDF::Direction_field_result a = field.compute(d1, np);
+    const SMDF::Direction_field_result b = SMDF::compute_globally_optimal_directions(mesh, d2, np);
+    double worst = 0.;
+    for(Vertex_index v : mesh.vertices()) worst = (std::max)(worst, angle_mod(d1[v], d2[v], ns.first));
+    const bool ok = std::abs(a.components[0].eigenvalue - b.components[0].eigenvalue) <=
+                      1e-10 * std::abs(b.components[0].eigenvalue) && worst < 1e-6 && a.index_sum == b.index_sum &&
+                    a.number_of_singular_faces == b.number_of_singular_faces;
+    if(!ok) worst_case += " (n=" + std::to_string(ns.first) + ", s=" + std::to_string(ns.second) + ")";
+    same = same && ok;
+  }
+  report.check(same, "Globally_optimal_direction_field: six calls with changing (n, s) match the free function" +
+                       worst_case);
 }
 
 int main()

@@ -49,18 +49,24 @@ struct Constraints
   }
 };
 
+// `same_pattern`: the system has the sparsity pattern of the previous call
+// with the same `factored` (e.g. another lambda), so the symbolic analysis is reused.
 template <typename SparseSolver>
 Complex_vector solve_aligned_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
-                                    const Complex_vector& Mq, const Constraints& constraints, SparseSolver& solver)
+                                    const Complex_vector& Mq, const Constraints& constraints,
+                                    Factored_matrix<SparseSolver>& factored, bool same_pattern = false)
 {
-  typedef typename SparseSolver::Matrix Solver_matrix;
-  typedef typename SparseSolver::Vector Solver_vector;
-  typedef typename SparseSolver::NT Solver_NT;
   const Eigen::Index n = A.rows();
+  if(constraints.empty())
+  {
+    factored.factor(Complex_sparse_matrix(A - lambda * M), same_pattern);
+    return factored.solve(Mq);
+  }
+
   std::vector<Eigen::Index> free_index(static_cast<std::size_t>(n), -1);
   Eigen::Index nf = 0;
   for(Eigen::Index i = 0; i < n; ++i)
-    if(constraints.is_constrained.empty() || !constraints.is_constrained[static_cast<std::size_t>(i)])
+    if(!constraints.is_constrained[static_cast<std::size_t>(i)])
       free_index[static_cast<std::size_t>(i)] = nf++;
 
   Complex_vector u(n);
@@ -68,29 +74,31 @@ Complex_vector solve_aligned_system(const Complex_sparse_matrix& A, const Comple
     u[i] = free_index[static_cast<std::size_t>(i)] < 0 ? constraints.values[i] : Complex(0., 0.);
   if(nf == 0) return u;
 
+  // K_FF, written column by column (rows stay sorted), and the right-hand side
+  // (M q)_F - K_FC c
   const Complex_sparse_matrix K = A - lambda * M;
-  Solver_matrix K_ff(static_cast<int>(nf), static_cast<int>(nf));
+  Complex_sparse_matrix K_ff(nf, nf);
+  K_ff.reserve(K.nonZeros());
   Complex_vector rhs(nf);
   for(Eigen::Index i = 0; i < n; ++i)
     if(free_index[static_cast<std::size_t>(i)] >= 0) rhs[free_index[static_cast<std::size_t>(i)]] = Mq[i];
   for(Eigen::Index col = 0; col < K.outerSize(); ++col)
+  {
+    const Eigen::Index c = free_index[static_cast<std::size_t>(col)];
+    if(c >= 0) K_ff.startVec(c);
     for(Complex_sparse_matrix::InnerIterator it(K, col); it; ++it)
     {
       const Eigen::Index r = free_index[static_cast<std::size_t>(it.row())];
-      const Eigen::Index c = free_index[static_cast<std::size_t>(it.col())];
       if(r < 0) continue;
-      if(c >= 0) K_ff.add_coef(static_cast<std::size_t>(r), static_cast<std::size_t>(c), it.value());
-      else rhs[r] -= it.value() * u[it.col()];
+      if(c >= 0) K_ff.insertBack(r, c) = it.value();
+      else rhs[r] -= it.value() * u[col];
     }
-  Solver_NT D;
-  if(!solver.factor(K_ff, D))
-    throw Solver_failure_error("the sparse solver could not factor A - lambda M");
-  Solver_vector b(static_cast<int>(nf)), x(static_cast<int>(nf));
-  for(Eigen::Index i = 0; i < nf; ++i) b[i] = rhs[i];
-  if(!solver.linear_solver(b, x))
-    throw Solver_failure_error("the sparse solver failed on the aligned system");
+  }
+  K_ff.finalize();
+  factored.factor(K_ff, same_pattern);
+  const Complex_vector x = factored.solve(rhs);
   for(Eigen::Index i = 0; i < n; ++i)
-    if(free_index[static_cast<std::size_t>(i)] >= 0) u[i] = x[free_index[static_cast<std::size_t>(i)]] / D;
+    if(free_index[static_cast<std::size_t>(i)] >= 0) u[i] = x[free_index[static_cast<std::size_t>(i)]];
   return u;
 }
 
@@ -105,10 +113,10 @@ inline double alignment_weight_of(const Complex_sparse_matrix& M, const Complex_
 template <typename SparseSolver>
 double find_lambda_for_weight(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, const Complex_vector& Mq,
                               const Constraints& constraints, double lambda_1, double target, double scale,
-                              SparseSolver& solver, Complex_vector& u, std::size_t& evaluations)
+                              Factored_matrix<SparseSolver>& factored, Complex_vector& u, std::size_t& evaluations)
 {
   auto weight_at = [&](double x, Complex_vector& sol) {
-    sol = solve_aligned_system(A, M, lambda_1 - std::exp(x), Mq, constraints, solver);
+    sol = solve_aligned_system(A, M, lambda_1 - std::exp(x), Mq, constraints, factored, evaluations > 0);
     ++evaluations;
     return alignment_weight_of(M, sol) - target;
   };

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 
@@ -136,39 +137,141 @@ struct Energy_and_mass
   Complex_sparse_matrix mass;    // M, Hermitian positive definite
 };
 
-// Assembles A and M (both triangles stored) of one component.
+// The local matrices of every face (indexed by face); the faces are
+// independent, so this runs in parallel when TBB is available.
+inline std::vector<Local_matrices> all_local_matrices(const Tangent_spaces& ts, const Connection& con, double s)
+{
+  std::vector<Local_matrices> local(ts.face_area.size());
+  parallel_for_each_index(local.size(), [&](std::size_t f) { local[f] = local_matrices(ts, con, f, s); });
+  return local;
+}
+
+struct Column_entry
+{
+  Eigen::Index row;
+  Complex energy, mass;
+};
+
+// The entries of column v (global vertex index) of A and M, sorted by row, by
+// gathering from the faces of v's fan; gathering (rather than scattering
+// face by face) lets columns be filled in parallel without conflicts.
+// In face t with v = t[c]: v is the vertex j of pair (c+2)%3, whose k is
+// t[c+1], so (row t[c+1], column v) holds that pair's value; and v is the
+// vertex k of pair (c+1)%3, whose j is t[c+2], so (row t[c+2], column v)
+// holds the conjugate of that pair's value (see Local_matrices).
+inline void gather_column(const Indexed_mesh& m, const std::vector<Local_matrices>& local,
+                          const std::vector<std::size_t>& local_index, std::size_t v,
+                          std::vector<Column_entry>& column)
+{
+  column.clear();
+  double energy_diagonal = 0., mass_diagonal = 0.;
+  for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
+  {
+    const std::size_t corner = m.fan_corners[k], f = corner / 3;
+    const int c = static_cast<int>(corner % 3), after = (c + 1) % 3, before = (c + 2) % 3;
+    const Local_matrices& lm = local[f];
+    energy_diagonal += lm.energy_diagonal[c];
+    mass_diagonal += lm.mass_diagonal[c];
+    column.push_back({static_cast<Eigen::Index>(local_index[m.faces[f][after]]), lm.energy_pair[before],
+                      lm.mass_pair[before]});
+    column.push_back({static_cast<Eigen::Index>(local_index[m.faces[f][before]]), std::conj(lm.energy_pair[after]),
+                      std::conj(lm.mass_pair[after])});
+  }
+  column.push_back({static_cast<Eigen::Index>(local_index[v]), Complex(energy_diagonal, 0.),
+                    Complex(mass_diagonal, 0.)});
+  // insertion sort (a column has about 13 raw entries), then merge equal rows
+  for(std::size_t a = 1; a < column.size(); ++a)
+    for(std::size_t b = a; b > 0 && column[b].row < column[b - 1].row; --b)
+      std::swap(column[b], column[b - 1]);
+  std::size_t last = 0;
+  for(std::size_t a = 1; a < column.size(); ++a)
+  {
+    if(column[a].row == column[last].row)
+    {
+      column[last].energy += column[a].energy;
+      column[last].mass += column[a].mass;
+    }
+    else
+      column[++last] = column[a];
+  }
+  column.resize(last + 1);
+}
+
+// Assembles A and M (both triangles stored, compressed column storage) of one
+// component from the local matrices of all faces: the pattern and the values
+// are written directly into the compressed arrays, without triplets.
+inline Energy_and_mass assemble_component(const Indexed_mesh& m, const std::vector<Local_matrices>& local,
+                                          const Component& comp, const std::vector<std::size_t>& local_index)
+{
+  typedef Complex_sparse_matrix::StorageIndex Storage_index;
+  const std::size_t nc = comp.vertices.size();
+  const auto n = static_cast<Eigen::Index>(nc);
+  std::vector<Storage_index> column_size(nc);
+  parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
+    std::vector<Column_entry> column;
+    for(std::size_t jl = begin; jl < end; ++jl)
+    {
+      gather_column(m, local, local_index, comp.vertices[jl], column);
+      column_size[jl] = static_cast<Storage_index>(column.size());
+    }
+  });
+
+  Energy_and_mass em;
+  em.energy.resize(n, n);
+  em.mass.resize(n, n);
+  std::size_t nnz = 0;
+  for(Storage_index size : column_size) nnz += static_cast<std::size_t>(size);
+  em.energy.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  em.mass.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  Storage_index* outer_a = em.energy.outerIndexPtr();
+  Storage_index* outer_m = em.mass.outerIndexPtr();
+  outer_a[0] = outer_m[0] = 0;
+  for(std::size_t jl = 0; jl < nc; ++jl)
+    outer_a[jl + 1] = outer_m[jl + 1] = outer_a[jl] + column_size[jl];
+
+  Storage_index* inner_a = em.energy.innerIndexPtr();
+  Storage_index* inner_m = em.mass.innerIndexPtr();
+  Complex* value_a = em.energy.valuePtr();
+  Complex* value_m = em.mass.valuePtr();
+  parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
+    std::vector<Column_entry> column;
+    for(std::size_t jl = begin; jl < end; ++jl)
+    {
+      gather_column(m, local, local_index, comp.vertices[jl], column);
+      Storage_index p = outer_a[jl];
+      for(const Column_entry& e : column)
+      {
+        inner_a[p] = inner_m[p] = static_cast<Storage_index>(e.row);
+        value_a[p] = e.energy;
+        value_m[p] = e.mass;
+        ++p;
+      }
+    }
+  });
+  return em;
+}
+
+// A and M of every component.
+inline std::vector<Energy_and_mass> assemble_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                                             const Connection& con, const Components& comps,
+                                                             double s)
+{
+  const std::vector<Local_matrices> local = all_local_matrices(ts, con, s);
+  std::vector<Energy_and_mass> matrices;
+  matrices.reserve(comps.list.size());
+  for(const Component& comp : comps.list)
+    matrices.push_back(assemble_component(m, local, comp, comps.local_index));
+  return matrices;
+}
+
+// A and M of one component (computes the local matrices of its faces only).
 inline Energy_and_mass assemble_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
                                                 const Connection& con, const Component& comp,
                                                 const std::vector<std::size_t>& local_index, double s)
 {
-  typedef Eigen::Triplet<Complex> Triplet;
-  std::vector<Triplet> a, b;
-  a.reserve(9 * comp.faces.size());
-  b.reserve(9 * comp.faces.size());
-  for(std::size_t f : comp.faces)
-  {
-    const Local_matrices lm = local_matrices(ts, con, f, s);
-    const auto& t = m.faces[f];
-    for(int c = 0; c < 3; ++c)
-    {
-      const auto i = static_cast<Eigen::Index>(local_index[t[c]]);
-      const auto j = static_cast<Eigen::Index>(local_index[t[(c + 1) % 3]]);
-      const auto k = static_cast<Eigen::Index>(local_index[t[(c + 2) % 3]]);
-      a.emplace_back(i, i, Complex(lm.energy_diagonal[c], 0.));
-      a.emplace_back(k, j, lm.energy_pair[c]);
-      a.emplace_back(j, k, std::conj(lm.energy_pair[c]));
-      b.emplace_back(i, i, Complex(lm.mass_diagonal[c], 0.));
-      b.emplace_back(k, j, lm.mass_pair[c]);
-      b.emplace_back(j, k, std::conj(lm.mass_pair[c]));
-    }
-  }
-  const auto n = static_cast<Eigen::Index>(comp.vertices.size());
-  Energy_and_mass em;
-  em.energy.resize(n, n);
-  em.mass.resize(n, n);
-  em.energy.setFromTriplets(a.begin(), a.end());
-  em.mass.setFromTriplets(b.begin(), b.end());
-  return em;
+  std::vector<Local_matrices> local(m.number_of_faces());
+  for(std::size_t f : comp.faces) local[f] = local_matrices(ts, con, f, s);
+  return assemble_component(m, local, comp, local_index);
 }
 
 } // namespace internal

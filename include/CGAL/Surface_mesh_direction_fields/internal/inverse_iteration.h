@@ -16,6 +16,8 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -46,6 +48,11 @@ struct Eigen_solve_options
   double residual_tolerance = 1e-10;
   std::size_t max_iterations = 1000;
   unsigned int random_seed = 0;
+  // Vectors per block solve, and the largest basis kept for Rayleigh-Ritz
+  // (its memory is basis_size complex vectors).
+  Eigen::Index block_size = 1;
+  Eigen::Index basis_size = 16;
+  bool same_pattern = false;  // A + epsilon M has the pattern of the previous factorization
 };
 
 struct Eigen_solve_result
@@ -79,151 +86,209 @@ inline double m_norm(const Complex_sparse_matrix& M, const Complex_vector& x)
   return std::sqrt((std::max)(0., x.dot(M * x).real()));  // dot conjugates its left argument
 }
 
-// M-orthonormalizes w against the columns of V (classical Gram-Schmidt, applied
-// twice for numerical orthogonality) and returns its remaining M-norm.
-inline double m_orthogonalize(const Complex_sparse_matrix& M, const std::vector<Complex_vector>& V,
-                              Complex_vector& w)
+// Y = H X for a Hermitian H stored with both triangles in compressed columns:
+// row i of H is the conjugate of its column i, so each entry of Y is a dot
+// product over one stored column -- contiguous reads, and rows can be
+// computed in parallel without write conflicts (Eigen's column-major product
+// scatters into rows instead).
+inline void hermitian_multiply(const Complex_sparse_matrix& H, const Complex_dense_matrix& X, Complex_dense_matrix& Y)
 {
-  for(int pass = 0; pass < 2; ++pass)
+  Y.resize(H.rows(), X.cols());
+  const auto* outer = H.outerIndexPtr();
+  const auto* inner = H.innerIndexPtr();
+  const Complex* value = H.valuePtr();
+  const auto* non_zeros = H.innerNonZeroPtr();  // null when compressed
+  parallel_for_each_index(static_cast<std::size_t>(H.outerSize()), [&](std::size_t i) {
+    const auto begin = outer[i];
+    const auto end = non_zeros ? begin + non_zeros[i] : outer[i + 1];
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+    {
+      const Complex* x = X.col(j).data();
+      Complex sum(0., 0.);
+      for(auto p = begin; p < end; ++p) sum += std::conj(value[p]) * x[inner[p]];
+      Y(static_cast<Eigen::Index>(i), j) = sum;
+    }
+  });
+}
+
+inline Complex_dense_matrix hermitian_multiply(const Complex_sparse_matrix& H, const Complex_dense_matrix& X)
+{
+  Complex_dense_matrix Y;
+  hermitian_multiply(H, X, Y);
+  return Y;
+}
+
+// Makes the columns of W orthonormal for the diagonal inner product
+// <x, y> = x^* diag(d) y and orthogonal to the (already orthonormal) columns
+// of V: block Gram-Schmidt against V, then Gram-Schmidt within W, each
+// applied twice when needed for numerical orthogonality. No sparse product
+// is needed.
+// Columns that (numerically) lie in the span of the others are dropped.
+template <typename Basis>
+Complex_dense_matrix d_orthonormalize(const Eigen::VectorXd& d, const Basis& V, Complex_dense_matrix W)
+{
+  auto d_norm = [&d](const Complex_vector& w) { return std::sqrt(w.cwiseAbs2().dot(d)); };
+  Eigen::VectorXd norm_before(W.cols());
+  for(Eigen::Index j = 0; j < W.cols(); ++j) norm_before[j] = d_norm(W.col(j));
+  // A second pass only when the first one removed most of W (the test of
+  // Daniel, Gragg, Kaufman and Stewart): otherwise W is already orthogonal to
+  // working accuracy, and each pass reads the whole basis twice.
+  for(int pass = 0; pass < 2 && V.cols() > 0; ++pass)
   {
-    const Complex_vector Mw = M * w;
-    for(const Complex_vector& v : V)
-      w -= v * v.dot(Mw);  // v^* M w, with v M-normalized
+    const Complex_dense_matrix DW = d.asDiagonal() * W;
+    W.noalias() -= V * (V.adjoint() * DW);
+    bool accurate = true;
+    for(Eigen::Index j = 0; j < W.cols(); ++j)
+      accurate = accurate && d_norm(W.col(j)) > 0.5 * norm_before[j];
+    if(accurate) break;
   }
-  return m_norm(M, w);
+  Eigen::Index kept = 0;
+  for(Eigen::Index j = 0; j < W.cols(); ++j)
+  {
+    Complex_vector w = W.col(j);
+    for(int pass = 0; pass < 2 && kept > 0; ++pass)
+    {
+      const Complex_vector Dw = d.asDiagonal() * w;
+      for(Eigen::Index i = 0; i < kept; ++i) w -= W.col(i) * W.col(i).dot(Dw);
+    }
+    const double norm = d_norm(w);
+    if(norm > 1e-10 * norm_before[j] && std::isfinite(norm))
+      W.col(kept++) = w / norm;
+  }
+  return W.leftCols(kept);
 }
 
 // The smallest eigenpair of the pencil (A, M).
 //
-// The iteration is inverse power iteration, x <- (A + epsilon M)^{-1} M x, with
-// one factorization of A + epsilon M; but instead of keeping only the last
-// iterate it keeps the iterates as an M-orthonormal basis V (a Krylov space of
-// the shifted-inverse operator, which is self-adjoint for the M inner product)
-// and takes the best vector of that space by Rayleigh-Ritz: the smallest
-// eigenpair of the small Hermitian matrix V^* A V. On a mesh with a clear gap
-// above lambda_1 this converges like inverse iteration; on symmetric shapes,
-// whose lowest eigenvalues cluster (a round sphere, a torus of revolution),
-// it converges where plain inverse iteration would need thousands of steps.
-// When V reaches `basis_size` vectors, it is restarted with the `kept`
-// best Ritz vectors. The iteration stops when the relative residual of the
-// best Ritz pair reaches the tolerance; `iterations` counts the solves.
+// Inverse iteration, X <- (A + epsilon M)^{-1} M X, on one factorization of
+// A + epsilon M, applied to a block of `block_size` vectors (1 by default:
+// on the shared meshes a block of b vectors saves fewer solves than the b
+// times more work of a block solve), accelerated by Rayleigh-Ritz: the
+// iterates are kept as a basis V (orthonormal for the lumped mass diag(M),
+// which needs no sparse product and keeps V^* M V well conditioned) and the
+// best vector of span(V) is the smallest eigenpair of the small pencil
+// (V^* A V, V^* M V). Each step applies the solve to the current best Ritz
+// vectors, so the basis holds the iterates of a Krylov-like sequence; on
+// symmetric shapes, whose lowest eigenvalues cluster (a round sphere, a
+// torus of revolution), this converges where plain inverse iteration would
+// need thousands of steps. When V is full it is restarted with the current
+// and the previous best Ritz vectors, whose span holds the step direction
+// (as in LOBPCG). Only V is stored (not A V, M V), so the memory is
+// `basis_size` vectors. The iteration stops when the relative residual of the
+// best Ritz pair reaches the tolerance; `iterations` counts the solves
+// (of a block each).
 template <typename SparseSolver>
 Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                      SparseSolver& solver, const Eigen_solve_options& options)
+                                      Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options)
 {
   typedef std::chrono::steady_clock Clock;
-  typedef typename SparseSolver::Matrix Solver_matrix;
-  typedef typename SparseSolver::Vector Solver_vector;
-  typedef typename SparseSolver::NT Solver_NT;
-  typedef Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> Dense_matrix;
-
   const Eigen::Index n = A.rows();
   Eigen_solve_result result;
-  const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
+  const Eigen::VectorXd lumped_mass = M.diagonal().real();
+  const double sigma = A.diagonal().real().sum() / lumped_mass.sum();
   const double shift = options.relative_shift * sigma;
 
   const auto t0 = Clock::now();
-  const Complex_sparse_matrix shifted = A + shift * M;
-  Solver_matrix S(static_cast<int>(n), static_cast<int>(n));
-  for(Eigen::Index col = 0; col < shifted.outerSize(); ++col)
-    for(Complex_sparse_matrix::InnerIterator it(shifted, col); it; ++it)
-      S.add_coef(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(it.col()), it.value());
-  Solver_NT D;
-  if(!solver.factor(S, D))
-    throw Solver_failure_error("the sparse solver could not factor the shifted energy matrix");
+  {
+    Complex_sparse_matrix shifted = A + shift * M;
+    factored.factor(shifted, options.same_pattern);
+  }
   const auto t1 = Clock::now();
 
-  Solver_vector rhs(static_cast<int>(n)), x(static_cast<int>(n));
-  auto apply_shifted_inverse = [&](const Complex_vector& v) {
-    const Complex_vector Mv = M * v;
-    for(Eigen::Index i = 0; i < n; ++i) rhs[i] = Mv[i];
-    if(!solver.linear_solver(rhs, x))
-      throw Solver_failure_error("the sparse solver failed during inverse iteration");
-    Complex_vector y(n);
-    for(Eigen::Index i = 0; i < n; ++i) y[i] = x[i] / D;
-    return y;
+  const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
+  const Eigen::Index basis_size = (std::max)(3 * block, (std::min)(options.basis_size, n));
+
+  // basis: the first `k` columns of V (allocated once)
+  Complex_dense_matrix V(n, basis_size + 2 * block);
+  Eigen::Index k = 0;
+  Complex_dense_matrix H(0, 0), G(0, 0);  // V^* A V and V^* M V
+  Complex_dense_matrix AQ, MQ;
+  auto add_to_basis = [&](const Complex_dense_matrix& W) {
+    const Complex_dense_matrix Q = d_orthonormalize(lumped_mass, V.leftCols(k), W);
+    const Eigen::Index q = Q.cols();
+    if(q == 0) return q;
+    hermitian_multiply(A, Q, AQ);
+    hermitian_multiply(M, Q, MQ);
+    H.conservativeResize(k + q, k + q);
+    G.conservativeResize(k + q, k + q);
+    H.topRightCorner(k, q) = V.leftCols(k).adjoint() * AQ;
+    G.topRightCorner(k, q) = V.leftCols(k).adjoint() * MQ;
+    H.bottomLeftCorner(q, k) = H.topRightCorner(k, q).adjoint();
+    G.bottomLeftCorner(q, k) = G.topRightCorner(k, q).adjoint();
+    const Complex_dense_matrix QAQ = Q.adjoint() * AQ, QMQ = Q.adjoint() * MQ;
+    H.bottomRightCorner(q, q) = 0.5 * (QAQ + QAQ.adjoint());
+    G.bottomRightCorner(q, q) = 0.5 * (QMQ + QMQ.adjoint());
+    V.middleCols(k, q) = Q;
+    k += q;
+    return q;
+  };
+  auto random_block = [&](Eigen::Index cols, unsigned int seed) {
+    Complex_dense_matrix X(n, cols);
+    for(Eigen::Index j = 0; j < cols; ++j) X.col(j) = random_start_vector(n, seed + static_cast<unsigned int>(j));
+    return X;
   };
 
-  const std::size_t basis_size = static_cast<std::size_t>((std::min)(Eigen::Index(20), n));
-  const std::size_t kept = (std::min)(std::size_t(5), basis_size - 1);
-  std::vector<Complex_vector> V;   // M-orthonormal basis
-  std::vector<Complex_vector> AV;  // A times each basis vector
-  V.reserve(basis_size);
-  AV.reserve(basis_size);
-  Dense_matrix H(0, 0);            // V^* A V
-
-  auto add_to_basis = [&](Complex_vector w) {
-    const double before = m_norm(M, w);
-    const double after = m_orthogonalize(M, V, w);
-    if(!(after > 1e-10 * before) || !std::isfinite(after))
-      return false;  // w lies in span(V) (numerically)
-    w /= after;
-    AV.push_back(A * w);
-    const Eigen::Index k = static_cast<Eigen::Index>(V.size());
-    H.conservativeResize(k + 1, k + 1);
-    for(Eigen::Index i = 0; i < k; ++i)
-    {
-      H(i, k) = V[static_cast<std::size_t>(i)].dot(AV.back());
-      H(k, i) = std::conj(H(i, k));
-    }
-    H(k, k) = Complex(w.dot(AV.back()).real(), 0.);
-    V.push_back(std::move(w));
-    return true;
-  };
-
-  unsigned int extra_seed = options.random_seed;
-  add_to_basis(random_start_vector(n, extra_seed));
-  Complex_vector next = V.front();  // the vector the next solve is applied to
-  Complex_vector u = V.front();
+  unsigned int next_seed = options.random_seed;
+  add_to_basis(random_block(block, next_seed));
+  next_seed += static_cast<unsigned int>(block);
+  Complex_dense_matrix next = V.leftCols(k);  // the block the next solve is applied to
+  Complex_dense_matrix previous(n, 0);        // the best Ritz vectors of the previous step
+  Complex_dense_matrix MX = hermitian_multiply(M, next), AU;
+  Complex_vector u = next.col(0);
   while(result.iterations < options.max_iterations)
   {
-    Complex_vector w = apply_shifted_inverse(next);
+#ifdef SMDF_DEBUG_RR
+    const auto ts0 = Clock::now();
+#endif
+    const Complex_dense_matrix W = factored.solve(MX);
     ++result.iterations;
-    if(!add_to_basis(w))
+#ifdef SMDF_DEBUG_RR
+    std::cerr << "solve " << std::chrono::duration<double, std::milli>(Clock::now() - ts0).count() << " ms\n";
+#endif
+#ifdef SMDF_DEBUG_RR
+    const auto ta0 = Clock::now();
+#endif
+    if(k + W.cols() > basis_size)
     {
-      // Invariant subspace: enrich with a fresh random direction.
-      if(V.size() >= static_cast<std::size_t>(n) || !add_to_basis(random_start_vector(n, ++extra_seed)))
+      // Restart with the current and the previous best Ritz vectors.
+      k = 0;
+      H.resize(0, 0);
+      G.resize(0, 0);
+      add_to_basis(next);
+      add_to_basis(previous);
+    }
+    if(add_to_basis(W) == 0)
+    {
+      // An invariant subspace: enrich with fresh random directions.
+      if(k >= n || add_to_basis(random_block(block, next_seed)) == 0)
         break;
+      next_seed += static_cast<unsigned int>(block);
     }
-    next = V.back();
 
-    // Rayleigh-Ritz: best vector of span(V).
-    Eigen::SelfAdjointEigenSolver<Dense_matrix> ritz(H);
-    const Complex_vector y = ritz.eigenvectors().col(0);
-    u.setZero();
-    Complex_vector Au = Complex_vector::Zero(n);
-    for(std::size_t i = 0; i < V.size(); ++i)
-    {
-      u += y[static_cast<Eigen::Index>(i)] * V[i];
-      Au += y[static_cast<Eigen::Index>(i)] * AV[i];
-    }
-    const Complex_vector Mu = M * u;
-    const double norm_u = std::sqrt((std::max)(0., u.dot(Mu).real()));
-    result.eigenvalue = u.dot(Au).real() / (norm_u * norm_u);
-    result.residual = (Au - result.eigenvalue * Mu).norm() / (sigma * Mu.norm());
+#ifdef SMDF_DEBUG_RR
+    const auto tr0 = Clock::now();
+    std::cerr << "add " << std::chrono::duration<double, std::milli>(tr0 - ta0).count() << " ms\n";
+#endif
+    // Rayleigh-Ritz: the best vectors of span(V), M-orthonormal.
+    Eigen::GeneralizedSelfAdjointEigenSolver<Complex_dense_matrix> ritz(H, G);
+    if(ritz.info() != Eigen::Success)
+      break;  // V^* M V not positive definite: cannot happen for a positive definite M
+    const Eigen::Index best = (std::min)(block, k);
+    previous.swap(next);
+    next = V.leftCols(k) * ritz.eigenvectors().leftCols(best);
+    u = next.col(0);
+    hermitian_multiply(M, next, MX);
+    hermitian_multiply(A, u, AU);
+    const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
+    result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
+    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (sigma * MX.col(0).norm());
+#ifdef SMDF_DEBUG_RR
+    std::cerr << "rr " << std::chrono::duration<double, std::milli>(Clock::now() - tr0).count() << " ms\n";
+#endif
     if(result.residual <= options.residual_tolerance)
     {
       result.converged = true;
       break;
-    }
-
-    if(V.size() >= basis_size)
-    {
-      // Thick restart: keep the best Ritz vectors; continue the Krylov
-      // sequence from the best one.
-      const Eigen::Index k = static_cast<Eigen::Index>(kept);
-      std::vector<Complex_vector> V_new(kept, Complex_vector::Zero(n)), AV_new(kept, Complex_vector::Zero(n));
-      for(Eigen::Index j = 0; j < k; ++j)
-        for(std::size_t i = 0; i < V.size(); ++i)
-        {
-          V_new[static_cast<std::size_t>(j)] += ritz.eigenvectors()(static_cast<Eigen::Index>(i), j) * V[i];
-          AV_new[static_cast<std::size_t>(j)] += ritz.eigenvectors()(static_cast<Eigen::Index>(i), j) * AV[i];
-        }
-      V.swap(V_new);
-      AV.swap(AV_new);
-      H = Dense_matrix::Zero(k, k);
-      for(Eigen::Index j = 0; j < k; ++j) H(j, j) = ritz.eigenvalues()[j];
-      next = V.front();
     }
   }
   const auto t2 = Clock::now();

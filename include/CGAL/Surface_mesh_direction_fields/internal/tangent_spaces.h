@@ -18,6 +18,8 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -98,8 +100,8 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
   // embedded ones (accurate for slivers), from the lengths when they were
   // mollified (Heron's formula in Kahan's stable form).
   ts.corner_dot.resize(3 * nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
+  std::vector<unsigned char> degenerate(nf, 0);
+  parallel_for_each_index(nf, [&](std::size_t f) {
     const double* l = &ts.side_length[3 * f];
     double area;
     if(ts.mollification == 0.)
@@ -126,11 +128,13 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
     }
     ts.face_area[f] = area;
     const double longest = (std::max)({l[0], l[1], l[2]});
-    if(!(area > 1e-14 * longest * longest) || !std::isfinite(area))
-      throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
+    degenerate[f] = !(area > 1e-14 * longest * longest) || !std::isfinite(area);
     for(int c = 0; c < 3; ++c)
       ts.corner_angle[3 * f + c] = std::atan2(2. * area, ts.corner_dot[3 * f + c]);
-  }
+  });
+  for(std::size_t f = 0; f < nf; ++f)  // the first degenerate face, whatever the thread count
+    if(degenerate[f])
+      throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
 }
 
 inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relative_mollification = 0.)
@@ -142,11 +146,10 @@ inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relat
   const std::size_t nv = m.number_of_vertices();
   ts.angle_scale.assign(nv, 1.);
   ts.corner_theta.assign(3 * m.number_of_faces(), 0.);
-  for(std::size_t v = 0; v < nv; ++v)
-  {
+  parallel_for_each_index(nv, [&](std::size_t v) {
     const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
     if(begin == end)
-      continue;
+      return;
     if(!m.is_border_vertex[v])
     {
       double angle_sum = 0.;
@@ -162,7 +165,7 @@ inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relat
       ts.corner_theta[corner] = theta;
       theta += ts.angle_scale[v] * ts.corner_angle[corner];
     }
-  }
+  });
 
   ts.face_angle_defect.resize(m.number_of_faces());
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
@@ -194,8 +197,7 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
   con.transport.resize(3 * nf);
   con.holonomy.resize(nf);
   const double n = static_cast<double>(degree);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
+  parallel_for_each_index(nf, [&](std::size_t f) {
     for(int c = 0; c < 3; ++c)
     {
       const std::size_t ci = 3 * f + c, cj = 3 * f + (c + 1) % 3;
@@ -207,7 +209,7 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
       con.transport[ci] = std::polar(1., std::remainder(n * angle, 2. * CGAL_PI));
     }
     con.holonomy[f] = n * ts.face_angle_defect[f];
-  }
+  });
   return con;
 }
 

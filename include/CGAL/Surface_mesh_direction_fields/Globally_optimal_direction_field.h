@@ -1,0 +1,468 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTION_FIELD_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTION_FIELD_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Named_function_parameters.h>
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_NAMED_PARAMETERS_DECLARED
+#  error "The include directory of Surface_mesh_direction_fields must come before CGAL's include directory (see the README)."
+#endif
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/alignment.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/aligned_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/field_inputs.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/iterator.h>
+
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+The default model of `SparseLinearAlgebraWithFactorTraits_d` used by
+`compute_globally_optimal_directions()` and `Globally_optimal_direction_field`:
+Eigen's simplicial \f$ LDL^\top \f$ factorization of complex Hermitian
+matrices; or, when the macro `CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD`
+is defined (the CMake target does it when CHOLMOD is found; the program must
+then link `libcholmod`), CHOLMOD's supernodal Cholesky factorization through
+Eigen's `CholmodSupernodalLLT`, about three times faster on large meshes with
+an optimized BLAS (OpenBLAS).
+
+With `CGAL::Eigen_solver_traits`, the package hands its Eigen matrices to the
+Eigen solver directly (no copy) and reuses the symbolic analysis when a
+matrix with the same sparsity pattern is factored again. Any other model of
+`SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT` works
+too, through a copy of each matrix.
+*/
+#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD) && !defined(DOXYGEN_RUNNING)
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<std::complex<double> > > >
+  Default_direction_field_solver;
+#else
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double> > > >
+  Default_direction_field_solver;
+#endif
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+\brief computes globally optimal direction fields on one triangle mesh,
+repeatedly, without redoing the work that does not change.
+
+Construction does the mesh work once: the indexing, the intrinsic geometry
+(edge lengths, angles, the rescaled tangent spaces), the connected components
+and the vertex normals. Each call of `compute()` then computes one field, with
+the same named parameters and results as
+`compute_globally_optimal_directions()` (which is this class used once). Between
+calls the class keeps:
+- the connection of the last degree `n` and the matrices of the last pair `(n, s)`,
+  so that several guidance fields, \f$ \lambda_t \f$ or alignment weights for
+  the same `n` and `s` cost no assembly and no eigen-solve of their own beyond
+  the eigenvalue bound, which is also kept;
+- with `CGAL::Eigen_solver_traits` (the default), one solver per component whose
+  symbolic analysis (fill-reducing ordering) is reused for every later
+  factorization of that component: the pattern of \f$ A + \epsilon M \f$ does not
+  depend on `n` or `s`. This memory (one Cholesky factor per component) is
+  held until the object is destroyed.
+
+The mesh must not change while the object is alive.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam GeomTraits a model of `DirectionFieldTraits_3`; by default the kernel of the mesh's point type
+\tparam SparseSolver a model of `SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT`
+
+\sa `compute_globally_optimal_directions()`
+*/
+template <typename TriangleMesh,
+          typename GeomTraits = typename GetGeomTraits<TriangleMesh>::type,
+          typename SparseSolver = Default_direction_field_solver>
+class Globally_optimal_direction_field
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef std::complex<double> Complex;
+  typedef std::chrono::steady_clock Clock;
+
+  // A solver and its factorization, for one component's A + epsilon M.
+  struct Component_factorization
+  {
+    SparseSolver solver;
+    internal::Factored_matrix<SparseSolver> factored{solver};
+    bool analyzed = false;
+  };
+
+public:
+  /// \name Creation
+  /// @{
+
+  /*!
+  does the mesh work: indexing, intrinsic geometry, components, vertex normals.
+
+  \param tmesh the triangle mesh; it is not modified, and must outlive the object unchanged
+  \param np an optional sequence of named parameters among `vertex_point_map`, `vertex_index_map`,
+         `face_index_map`, `geom_traits`, `vertex_normal_map` and `intrinsic_mollification`, with the
+         meaning and defaults given for `compute_globally_optimal_directions()`
+
+  \tparam NamedParameters a sequence of named parameters
+  \throws Invalid_input_error for an empty mesh, a non-triangle face, a non-manifold vertex, a non-finite
+          coordinate, or a zero-area face while `intrinsic_mollification` is `0`
+  */
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Globally_optimal_direction_field(const TriangleMesh& tmesh,
+                                            const NamedParameters& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    const auto start = Clock::now();
+    m_traits = choose_parameter<GeomTraits>(get_parameter(np, internal_np::geom_traits));
+    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tmesh));
+    const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
+    const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
+    const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
+    if(!(mollification >= 0.) || !std::isfinite(mollification))
+      throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
+
+    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    m_mesh = internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
+    m_tangent_spaces = internal::compute_tangent_spaces(m_mesh, mollification);
+    m_components = internal::split_into_components(m_mesh);
+
+    m_vertex_of_index.resize(m_mesh.number_of_vertices());
+    for(vertex_descriptor v : vertices(tmesh))
+      m_vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
+    m_face_of_index.resize(m_mesh.number_of_faces());
+    for(face_descriptor f : faces(tmesh))
+      m_face_of_index[static_cast<std::size_t>(get(fim, f))] = f;
+
+    // the tangent planes of the outputs and of the guidance vectors
+    if constexpr(is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
+      m_normals = internal::angle_weighted_vertex_normals(m_mesh, m_tangent_spaces);
+    else
+    {
+      const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
+      m_normals.resize(m_mesh.number_of_vertices());
+      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+        m_normals[i] = internal::normalized(to_array(get(vnm, m_vertex_of_index[i])));
+    }
+    m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /*!
+  computes one field, exactly as `compute_globally_optimal_directions(tmesh, vertex_direction_map, np)`
+  would, reusing what earlier calls computed (see the class description).
+  The named parameters are those of `compute_globally_optimal_directions()` except the ones of the
+  constructor (which are ignored here). In the result, `timings.setup_ms` counts the work of this
+  call only (connection and matrices, when `n` or `s` changed), not the construction.
+
+  \tparam VertexDirectionMap as for `compute_globally_optimal_directions()`
+  \tparam NamedParameters a sequence of named parameters
+  \param vertex_direction_map the property map receiving a unit tangent direction per vertex
+  \param np the named parameters of the field (see `compute_globally_optimal_directions()`)
+  \returns the report of this field, as `compute_globally_optimal_directions()` returns it
+  \throws Invalid_input_error, Solver_failure_error as `compute_globally_optimal_directions()`
+  */
+  template <typename VertexDirectionMap, typename NamedParameters = parameters::Default_named_parameters>
+  Direction_field_result compute(VertexDirectionMap vertex_direction_map,
+                                 const NamedParameters& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    typedef typename GeomTraits::FT FT;
+
+    const auto start = Clock::now();
+    Direction_field_result result;
+    result.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
+    result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
+    internal::check_field_parameters(result.degree, result.smoothness_parameter);
+    result.mollification = m_tangent_spaces.mollification;
+
+    internal::Eigen_solve_options options;
+    options.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
+    options.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
+    options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+    if(!(options.residual_tolerance >= 0.))
+      throw Invalid_input_error("the residual tolerance must be non-negative");
+
+    // A solver given as a named parameter is used for this call only, without reuse.
+    constexpr bool user_solver = !is_default_parameter<NamedParameters, internal_np::sparse_linear_solver_t>::value;
+    SparseSolver aligned_solver = choose_parameter<SparseSolver>(get_parameter(np, internal_np::sparse_linear_solver));
+    m_user_solver = user_solver ? std::make_unique<Component_factorization>() : nullptr;
+    if(user_solver) m_user_solver->solver = aligned_solver;
+
+    // --- the connection of degree n and the matrices of (n, s), unless kept from the last call
+    update_matrices(result.degree, result.smoothness_parameter);
+    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    result.timings.setup_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+
+    // --- guidance field q and hard constraints (method.md, section 6)
+    const std::vector<Complex> guidance =
+      internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np, m_vertex_of_index, m_normals,
+                                      result.degree, aligned_solver, to_array);
+    const bool has_guidance = !guidance.empty();
+    const internal::Vertex_constraints constraints =
+      internal::vertex_constraints(m_mesh, m_tangent_spaces, np, m_vertex_of_index, m_normals, result.degree, to_array);
+    const bool lambda_given = !is_default_parameter<NamedParameters, internal_np::alignment_lambda_t>::value;
+    const bool weight_given = !is_default_parameter<NamedParameters, internal_np::alignment_weight_t>::value;
+    const double lambda_requested = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
+    const double weight_requested = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
+    if(lambda_given && weight_given)
+      throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
+    if(lambda_given && !std::isfinite(lambda_requested))
+      throw Invalid_input_error("alignment_lambda must be a finite number");
+    if(weight_given && !(weight_requested > 0. && weight_requested < 1.))
+      throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + std::to_string(weight_requested) + ")");
+    if(weight_given && !has_guidance)
+      throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+
+    // --- one problem per component: the smallest eigenvector, or the aligned /
+    //     constrained linear solve
+    std::vector<Complex> u(m_mesh.number_of_vertices(), Complex(0., 0.));
+    std::vector<double> magnitude(m_mesh.number_of_vertices(), 0.);
+    result.components.resize(m_components.list.size());
+    for(std::size_t c = 0; c < m_components.list.size(); ++c)
+    {
+      const internal::Component& comp = m_components.list[c];
+      const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
+      Component_report& report = result.components[c];
+      internal::describe_component(m_mesh, comp, report);
+      const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
+      const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+
+      // this component's guidance, normalized to ||q||_M = 1 (none if it vanishes here)
+      internal::Complex_vector q = internal::Complex_vector::Zero(nc);
+      for(Eigen::Index i = 0; i < nc; ++i)
+        if(has_guidance) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
+      const double q_norm = internal::m_norm(M, q);
+      const bool aligned = has_guidance && q_norm > 0.;
+      if(aligned) q /= q_norm;
+      internal::Constraints local_constraints;
+      bool constrained = false;
+      if(!constraints.is_constrained.empty())
+      {
+        local_constraints.is_constrained.resize(comp.vertices.size());
+        local_constraints.values.resize(nc);
+        for(Eigen::Index i = 0; i < nc; ++i)
+        {
+          const std::size_t v = comp.vertices[static_cast<std::size_t>(i)];
+          local_constraints.is_constrained[static_cast<std::size_t>(i)] = constraints.is_constrained[v];
+          local_constraints.values[i] = constraints.values[v];
+          constrained = constrained || constraints.is_constrained[v];
+        }
+      }
+
+      internal::Complex_vector field;
+      const bool needs_eigenvalue = !constrained || aligned;  // lambda_1: the smoothest field, or the bound of lambda_t
+      if(needs_eigenvalue)
+      {
+        internal::Eigen_solve_options component_options = options;
+        internal::Factored_matrix<SparseSolver>& factored = eigen_factorization(c, component_options, user_solver);
+        const internal::Eigen_solve_result eig = internal::smallest_eigenpair(A, M, factored, component_options);
+        if(!m_keep_factorizations && !user_solver) m_factorizations[c].reset();
+        report.eigenvalue = eig.eigenvalue;
+        report.iterations = eig.iterations;
+        report.residual = eig.residual;
+        report.converged = eig.converged;
+        result.timings.factorization_ms += eig.factorization_ms;
+        field = eig.vector;
+      }
+      if(aligned || constrained)
+      {
+        const internal::Complex_vector Mq = M * q;
+        const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
+        // The default lambda_t is 0, as in the paper, unless lambda_1 is (nearly) 0
+        // (a flat or developable component), where 0 is not admissible.
+        double lambda = lambda_requested;
+        if(aligned && !lambda_given)
+          lambda = (std::min)(0., report.eigenvalue - 1e-6 * sigma);
+        if(aligned && weight_given)
+        {
+          std::size_t evaluations = 0;
+          internal::Factored_matrix<SparseSolver> factored(aligned_solver);
+          lambda = internal::find_lambda_for_weight(A, M, Mq, local_constraints, report.eigenvalue, weight_requested,
+                                                    sigma, factored, field, evaluations);
+          report.iterations += evaluations;
+        }
+        else
+        {
+          if(aligned && !(lambda < report.eigenvalue))
+            throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
+                                      std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
+                                      " (got " + std::to_string(lambda) + ")");
+          internal::Factored_matrix<SparseSolver> factored(aligned_solver);
+          field = internal::solve_aligned_system(A, M, lambda, Mq, local_constraints, factored);
+        }
+        report.lambda = lambda;
+        report.alignment_weight = aligned ? internal::alignment_weight_of(M, field) : 0.;
+        const double field_norm = internal::m_norm(M, field);
+        if(field_norm > 0.) field /= field_norm;
+      }
+
+      double area = 0.;
+      for(std::size_t f : comp.faces) area += m_tangent_spaces.face_area[f];
+      for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+      {
+        u[comp.vertices[i]] = field[static_cast<Eigen::Index>(i)];
+        magnitude[comp.vertices[i]] = std::abs(field[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
+      }
+      result.iterations = (std::max)(result.iterations, report.iterations);
+      result.residual = (std::max)(result.residual, report.residual);
+      result.converged = result.converged && report.converged;
+    }
+
+    // --- singularities
+    const std::vector<int> index = internal::face_indices(m_mesh, m_connection, u);
+    auto singularities_out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
+                                              CGAL::Emptyset_iterator());
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      Component_report& report = result.components[m_mesh.component_of_face[f]];
+      report.index_sum += index[f];
+      result.index_sum += index[f];
+      if(index[f] != 0)
+      {
+        ++report.number_of_singular_faces;
+        ++result.number_of_singular_faces;
+        *singularities_out++ = std::make_pair(m_face_of_index[f], index[f]);
+      }
+    }
+
+    // --- directions in 3D
+    auto construct_vector = m_traits.construct_vector_3_object();
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+    {
+      const internal::Vec3 d = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], result.degree, m_normals[i]);
+      put(vertex_direction_map, m_vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+      if(m_mesh.fan_size(i) == 0)
+        ++result.number_of_isolated_vertices;
+    }
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
+    {
+      auto vmm = get_parameter(np, internal_np::vertex_magnitude_map);
+      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+        put(vmm, m_vertex_of_index[i], magnitude[i]);
+    }
+
+    const auto end = Clock::now();
+    result.timings.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
+    result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
+
+    if(!m_keep_factorizations) m_factorizations.clear();
+    m_user_solver.reset();
+    return result;
+  }
+
+  /// @}
+
+  /// \cond SKIP_IN_MANUAL
+  // The time spent in the constructor, in milliseconds.
+  double construction_ms() const { return m_construction_ms; }
+  // Whether factorizations are kept between calls (true by default;
+  // compute_globally_optimal_directions() frees them after its single call).
+  void keep_factorizations(bool keep) { m_keep_factorizations = keep; }
+  /// \endcond
+
+private:
+  void update_matrices(int degree, double s)
+  {
+    if(!(m_has_matrices && degree == m_degree))
+    {
+      m_connection = internal::compute_connection(m_mesh, m_tangent_spaces, degree);
+      m_has_matrices = false;
+    }
+    if(!(m_has_matrices && s == m_s))
+    {
+      m_matrices.clear();  // free the old matrices before building the new ones
+      m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
+      m_has_matrices = true;
+      m_degree = degree;
+      m_s = s;
+    }
+  }
+
+  // The factorization of component c's A + epsilon M: the user's solver, or
+  // the component's own one, whose symbolic analysis is reused.
+  internal::Factored_matrix<SparseSolver>&
+  eigen_factorization(std::size_t c, internal::Eigen_solve_options& options, bool user_solver)
+  {
+    if(user_solver)
+    {
+      options.same_pattern = false;
+      return m_user_solver->factored;
+    }
+    if(m_factorizations.size() != m_components.list.size())
+      m_factorizations.resize(m_components.list.size());
+    if(!m_factorizations[c])
+      m_factorizations[c] = std::make_unique<Component_factorization>();
+    options.same_pattern = m_factorizations[c]->analyzed;
+    m_factorizations[c]->analyzed = true;
+    return m_factorizations[c]->factored;
+  }
+
+  GeomTraits m_traits;
+  internal::Indexed_mesh m_mesh;
+  internal::Tangent_spaces m_tangent_spaces;
+  internal::Components m_components;
+  std::vector<internal::Vec3> m_normals;
+  std::vector<vertex_descriptor> m_vertex_of_index;
+  std::vector<face_descriptor> m_face_of_index;
+  double m_construction_ms = 0.;
+
+  bool m_has_matrices = false;
+  int m_degree = 0;
+  double m_s = 0.;
+  internal::Connection m_connection;
+  std::vector<internal::Energy_and_mass> m_matrices;
+
+  bool m_keep_factorizations = true;
+  std::vector<std::unique_ptr<Component_factorization> > m_factorizations;
+  std::unique_ptr<Component_factorization> m_user_solver;
+};
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_GLOBALLY_OPTIMAL_DIRECTION_FIELD_H
