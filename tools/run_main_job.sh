@@ -12,7 +12,8 @@ cmake --build build --target direction_field -j "$(nproc)" >> build/main_job.log
 mkdir -p build/main_job
 out=build/main_job
 build/bin/direction_field "$@" --directions $out/directions.txt --singularities $out/singularities.txt \
-                                --png $out/field.png --json-file $out/summary.json
+                                --png $out/field.png --vtk $out/field.vtk --json-file $out/summary.json
 echo
 echo "Wrote $out/directions.txt (one unit vector per vertex), $out/singularities.txt (face, index k of k/n),"
-echo "      $out/summary.json and the picture $out/field.png"
+echo "      $out/summary.json, the picture $out/field.png and $out/field.vtk (ParaView: all n directions,"
+echo "      magnitude, singularities with their index)"

@@ -5,6 +5,7 @@
 //                   [--json-file FILE] [--seed N] [--max-iterations N] [--tolerance T]
 //                   [--align none|curvature|min-curvature|max-curvature] [--guidance FILE]
 //                   [--lambda L | --alignment-weight T] [--constrain-boundary tangent|normal]
+//                   [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]
 //
 // Computes the globally smoothest n-direction field of a mesh (OFF, OBJ, PLY
 // or STL) and its singular faces. The file is read as a polygon soup and
@@ -30,6 +31,15 @@
 //   --constrain-boundary  fix one direction tangent (or normal) to the boundary
 //   --png FILE            a picture of the field (shaded mesh, directions,
 //                         singular faces in red (+) and blue (-))
+//   The next files describe the repaired mesh (its vertices and triangles),
+//   written by CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h:
+//   --vtk FILE            legacy VTK PolyData for ParaView: all n directions,
+//                         the magnitude, the singularities as points with their index
+//   --ply FILE            PLY with per-vertex direction (dx dy dz) and magnitude,
+//                         per-face singularity integer k
+//   --rosy FILE           the field moved to the faces, as read by vcglib/QuadWild
+//   --ffield FILE         the same as a per-face frame file (vcglib's .ffield)
+//   --singularity-list FILE  one line "face k n x y z" per singular face
 // Exit status 0 on success; otherwise 1, with one line on stderr.
 
 #include <CGAL/Simple_cartesian.h>
@@ -37,6 +47,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
 
 #include "png_snapshot.h"
 #include "read_and_repair_mesh.h"
@@ -70,6 +81,7 @@ struct Options
   int degree = 4;
   double s = 0.;
   std::string directions, singularities, png, json_file;
+  std::string vtk, ply, rosy, ffield, singularity_list;
   bool json = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
@@ -87,7 +99,8 @@ const char* const usage =
   "                       [--json] [--json-file FILE] [--png FILE] [--seed N] [--max-iterations N]\n"
   "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
-  "                       [--constrain-boundary tangent|normal]\n";
+  "                       [--constrain-boundary tangent|normal]\n"
+  "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n";
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
@@ -126,6 +139,11 @@ Options parse_options(int argc, char** argv)
     else if(a == "--lambda") { o.lambda = parse_number<double>(a, value()); o.lambda_given = true; }
     else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, value()); o.weight_given = true; }
     else if(a == "--constrain-boundary") o.constrain_boundary = value();
+    else if(a == "--vtk") o.vtk = value();
+    else if(a == "--ply") o.ply = value();
+    else if(a == "--rosy") o.rosy = value();
+    else if(a == "--ffield") o.ffield = value();
+    else if(a == "--singularity-list") o.singularity_list = value();
     else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
     else if(o.mesh.empty()) o.mesh = a;
     else throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
@@ -254,6 +272,7 @@ int main(int argc, char** argv)
 
     std::vector<Vector_3> direction_storage(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
     auto directions = CGAL::make_property_map(direction_storage);
+    std::vector<double> magnitude_storage(mesh.number_of_vertices(), 0.);
     std::vector<std::pair<Face_index, int> > singular_faces;
     // guidance vectors of the file's vertices, carried to the mesh's (copies included)
     std::vector<Vector_3> guidance(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
@@ -293,6 +312,7 @@ int main(int argc, char** argv)
                   .residual_tolerance(o.tolerance)
                   .principal_curvature_alignment(curvature)
                   .boundary_alignment(boundary)
+                  .vertex_magnitude_map(CGAL::make_property_map(magnitude_storage))
                   .singularities_output_iterator(std::back_inserter(singular_faces));
     auto with_guidance = [&](auto np) {
       if(o.guidance.empty())
@@ -322,6 +342,25 @@ int main(int argc, char** argv)
         index_of_file_face[input.file_face_of_face[static_cast<std::size_t>(fk.first)]] += fk.second;
       for(const auto& fk : index_of_file_face)
         if(fk.second != 0) os << fk.first << " " << fk.second << "\n";
+    }
+    if(!o.vtk.empty() || !o.ply.empty() || !o.rosy.empty() || !o.ffield.empty() || !o.singularity_list.empty())
+    {
+      namespace SIO = SMDF::IO;
+      const SIO::Direction_field_data data = SIO::make_direction_field_data(
+        mesh, directions, o.degree, singular_faces,
+        CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(magnitude_storage)));
+      auto write = [](const std::string& path, auto writer) {
+        if(path.empty()) return;
+        std::ofstream os;
+        open_or_throw(os, path);
+        writer(os);
+        if(!os) throw Usage_error("cannot write '" + path + "'");
+      };
+      write(o.vtk, [&](std::ostream& os) { SIO::write_VTK(os, data); });
+      write(o.ply, [&](std::ostream& os) { SIO::write_PLY(os, data); });
+      write(o.rosy, [&](std::ostream& os) { SIO::write_rosy(os, data); });
+      write(o.ffield, [&](std::ostream& os) { SIO::write_ffield(os, data); });
+      write(o.singularity_list, [&](std::ostream& os) { SIO::write_singularities(os, data); });
     }
     if(!o.png.empty())
     {

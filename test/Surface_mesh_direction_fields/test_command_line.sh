@@ -87,6 +87,49 @@ assert all(len(x.replace("-", "").replace(".", "").split("e")[0]) >= 15 for x in
 EOF
 done
 
+# 2b. Exchange files (--vtk --ply --rosy --ffield --singularity-list), parsed here
+#     independently of the package's readers: counts, unit vectors, the n
+#     directions 2 pi / n apart, singularities summing to n chi.
+"$bin" "$out/octahedron.off" --degree 4 --vtk "$out/oct.vtk" --ply "$out/oct.ply" --rosy "$out/oct.rosy" \
+       --ffield "$out/oct.ffield" --singularity-list "$out/oct.sing" --singularities "$out/oct_sing.txt" --json > "$out/oct_files.json"
+check "exchange files run exits 0" test $? -eq 0
+check "exchange files: VTK, PLY, rosy, ffield, singularity list" python_checks "$out" <<'EOF'
+import math, sys
+out = sys.argv[1]
+tok = open(out + "/oct.vtk").read().split("\n")
+assert tok[0].startswith("# vtk DataFile") and tok[2] == "ASCII" and tok[3] == "DATASET POLYDATA"
+words = " ".join(tok[4:]).split()
+i = words.index("POINTS"); npts = int(words[i + 1])
+sing = [l.split() for l in open(out + "/oct.sing") if not l.startswith("#")]
+assert npts == 6 + len(sing)
+assert words[words.index("POLYGONS") + 1] == "8"
+j0 = words.index("direction_0") + 2
+v0 = [float(x) for x in words[j0:j0 + 18]]
+for k in range(4):
+    j = words.index("direction_%d" % k) + 2
+    v = [float(x) for x in words[j:j + 18]]
+    for a in range(6):
+        assert abs(math.sqrt(sum(x * x for x in v[3 * a:3 * a + 3])) - 1) < 1e-12
+        assert abs(sum(v0[3 * a + c] * v[3 * a + c] for c in range(3)) - math.cos(k * math.pi / 2)) < 1e-12
+assert "magnitude" in words and "singularity_index" in words
+ply = open(out + "/oct.ply").read().split("\n")
+assert ply[0] == "ply" and "comment direction_field_degree 4" in ply and "element vertex 6" in ply and "element face 8" in ply
+body = ply[ply.index("end_header") + 1:]
+faces = [l.split() for l in body[6:14]]
+assert sum(int(f[4]) for f in faces) == 8          # singularity integers: n chi = 4 * 2
+rosy = open(out + "/oct.rosy").read().split()
+assert rosy[0] == "8" and rosy[1] == "4" and len(rosy) == 2 + 3 * 8
+ff = open(out + "/oct.ffield").read().split("\n")
+assert ff[0].startswith("#") and ff[1] == "target frame" and ff[2] == "8" and len([l for l in ff[4:] if l.strip()]) == 8
+for l in ff[4:12]:
+    x = list(map(float, l.split()))
+    u, w = x[2:5], x[5:8]
+    assert abs(sum(a * b for a, b in zip(u, w))) < 1e-12 and abs(sum(a * a for a in w) - 1) < 1e-12
+assert sum(int(l[1]) for l in sing) == 8 and all(l[2] == "4" for l in sing)
+old = [l.split() for l in open(out + "/oct_sing.txt") if l.strip()]
+assert sorted((int(f), int(k)) for f, k in old) == sorted((int(l[0]), int(l[1])) for l in sing)
+EOF
+
 # 3. An isolated vertex first: its line is the zero vector, the others follow in file order.
 "$bin" "$out/isolated_first.off" --directions "$out/iso.txt" > /dev/null
 check "isolated vertex run exits 0" test $? -eq 0

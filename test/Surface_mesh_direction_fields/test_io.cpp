@@ -1,0 +1,234 @@
+// The exchange formats (IO/direction_field_files.h): every writer's output is
+// read back and compared with what was written, a Surface_mesh reads the PLY
+// file with CGAL's own reader, and the vertex-to-face transfer rule is checked
+// against its defining properties.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+
+#include "generated_meshes.h"
+#include "test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace SIO = CGAL::Surface_mesh_direction_fields::IO;
+typedef std::array<double, 3> V3;
+
+static double distance(const V3& a, const V3& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The largest difference between two lists of 3-vectors (infinity if the sizes differ).
+static double max_difference(const std::vector<V3>& a, const std::vector<V3>& b)
+{
+  if(a.size() != b.size()) return HUGE_VAL;
+  double worst = 0.;
+  for(std::size_t i = 0; i < a.size(); ++i) worst = (std::max)(worst, distance(a[i], b[i]));
+  return worst;
+}
+
+static double max_direction_difference(const SIO::Direction_field_data& a, const SIO::Direction_field_data& b)
+{
+  if(a.directions.size() != b.directions.size()) return HUGE_VAL;
+  double worst = 0.;
+  for(std::size_t v = 0; v < a.directions.size(); ++v) worst = (std::max)(worst, max_difference(a.directions[v], b.directions[v]));
+  return worst;
+}
+
+// The angle between two n-directions in the plane with normal `normal`, modulo 2 pi / n.
+static double angle_mod(const V3& a, const V3& b, const V3& normal, int n)
+{
+  const V3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double angle = std::atan2(c[0] * normal[0] + c[1] * normal[1] + c[2] * normal[2],
+                                  a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+  const double period = 2. * CGAL_PI / n;
+  const double r = std::remainder(angle, period);
+  return std::abs(r);
+}
+
+static V3 face_normal(const SIO::Direction_field_data& d, std::size_t f)
+{
+  const auto& t = d.faces[f];
+  const V3 a{d.points[t[1]][0] - d.points[t[0]][0], d.points[t[1]][1] - d.points[t[0]][1], d.points[t[1]][2] - d.points[t[0]][2]};
+  const V3 b{d.points[t[2]][0] - d.points[t[0]][0], d.points[t[2]][1] - d.points[t[0]][1], d.points[t[2]][2] - d.points[t[0]][2]};
+  V3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double l = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  for(double& x : c) x /= l;
+  return c;
+}
+
+static void check_round_trips(Test_report& report, const std::string& name, const Mesh& mesh, int degree)
+{
+  std::vector<Vector_3> storage(mesh.number_of_vertices());
+  auto dir = CGAL::make_property_map(storage);
+  std::vector<double> magnitude(mesh.number_of_vertices());
+  std::vector<std::pair<Face_index, int> > singular;
+  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+    mesh, dir, CGAL::parameters::degree(degree).vertex_magnitude_map(CGAL::make_property_map(magnitude))
+                 .singularities_output_iterator(std::back_inserter(singular)));
+  const SIO::Direction_field_data data = SIO::make_direction_field_data(
+    mesh, dir, degree, singular, CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(magnitude)));
+  const std::string what = name + " (n = " + std::to_string(degree) + ")";
+  report.check(data.singularities.size() == r.number_of_singular_faces && (name != "icosphere" || !data.singularities.empty()),
+               what + ": the data lists every singular face");
+
+  // the n directions: unit, tangent to the solver's plane (orthogonal to d_0's normal), 2 pi / n apart
+  bool directions_ok = true;
+  for(const auto& ds : data.directions)
+    for(std::size_t k = 0; k < ds.size(); ++k)
+    {
+      const V3& a = ds[k];
+      const V3& b = ds[(k + 1) % ds.size()];
+      const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      directions_ok = directions_ok && std::abs(std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) - 1.) < 1e-12 &&
+                      (ds.size() == 1 || std::abs(dot - std::cos(2. * CGAL_PI / degree)) < 1e-12);
+    }
+  report.check(directions_ok, what + ": the n directions are unit and 2 pi / n apart");
+
+  // VTK
+  {
+    std::stringstream ss;
+    SIO::write_VTK(ss, data);
+    const SIO::Direction_field_data back = SIO::read_VTK(ss);
+    report.check(back.degree == degree && max_difference(back.points, data.points) == 0. && back.faces == data.faces &&
+                   max_direction_difference(back, data) == 0. && back.magnitudes == data.magnitudes &&
+                   back.singularities == data.singularities &&
+                   max_difference(back.singularity_points, data.singularity_points) == 0.,
+                 what + ": VTK round trip is exact (points, triangles, all n directions, magnitudes, singularities)");
+  }
+  // PLY, read by the package and by CGAL's PLY reader
+  {
+    std::stringstream ss;
+    SIO::write_PLY(ss, data);
+    const std::string text = ss.str();
+    const SIO::Direction_field_data back = SIO::read_PLY(ss);
+    report.check(back.degree == degree && max_difference(back.points, data.points) == 0. && back.faces == data.faces &&
+                   max_direction_difference(back, data) < 1e-12 && back.magnitudes == data.magnitudes &&
+                   back.singularities == data.singularities,
+                 what + ": PLY round trip (first direction exact, the others rebuilt to 1e-12)");
+    Mesh read_mesh;
+    std::istringstream is(text);
+    const bool read = CGAL::IO::read_PLY(is, read_mesh);
+    bool same = read && read_mesh.number_of_vertices() == mesh.number_of_vertices() &&
+                read_mesh.number_of_faces() == mesh.number_of_faces();
+    auto dx = read_mesh.property_map<Vertex_index, double>("v:dx");
+    auto dy = read_mesh.property_map<Vertex_index, double>("v:dy");
+    auto dz = read_mesh.property_map<Vertex_index, double>("v:dz");
+    same = same && dx.second && dy.second && dz.second;
+    if(same)
+      for(Vertex_index v : read_mesh.vertices())
+      {
+        const auto& d = data.directions[std::size_t(v)][0];
+        same = same && dx.first[v] == d[0] && dy.first[v] == d[1] && dz.first[v] == d[2];
+      }
+    report.check(same, what + ": CGAL::IO::read_PLY reads the mesh and the direction properties v:dx, v:dy, v:dz");
+  }
+  // per-face formats
+  {
+    std::stringstream ss;
+    SIO::write_rosy(ss, data);
+    SIO::Direction_field_data back = data;
+    back.face_directions.clear();
+    SIO::read_rosy(ss, back);
+    report.check(back.degree == degree && max_difference(back.face_directions, data.face_directions) == 0.,
+                 what + ": rosy round trip is exact");
+    std::stringstream sf;
+    SIO::write_ffield(sf, data);
+    SIO::Direction_field_data back2 = data;
+    back2.face_directions.clear();
+    SIO::read_ffield(sf, back2);
+    report.check(max_difference(back2.face_directions, data.face_directions) < 1e-15,
+                 what + ": ffield round trip (first frame vector)");
+  }
+  // singularities as text
+  {
+    std::stringstream ss;
+    SIO::write_singularities(ss, data);
+    SIO::Direction_field_data back;
+    SIO::read_singularities(ss, back);
+    int sum = 0;
+    for(const auto& s : back.singularities) sum += s.second;
+    report.check(back.singularities == data.singularities && back.degree == degree &&
+                   max_difference(back.singularity_points, data.singularity_points) == 0. && sum == r.index_sum,
+                 what + ": singularity list round trip, index sum " + std::to_string(sum) + "/" + std::to_string(degree));
+  }
+
+  // The face rule does not depend on which of its n directions a vertex lists
+  // first, and face directions lie in the face plane.
+  SIO::Direction_field_data turned = data;
+  for(std::size_t v = 0; v < turned.directions.size(); ++v)
+    std::rotate(turned.directions[v].begin(), turned.directions[v].begin() + static_cast<long>(v % degree),
+                turned.directions[v].end());
+  const std::vector<V3> faces_turned = SIO::face_directions(turned);
+  double worst = 0., off_plane = 0.;
+  for(std::size_t f = 0; f < data.faces.size(); ++f)
+  {
+    const V3 n = face_normal(data, f);
+    worst = (std::max)(worst, angle_mod(faces_turned[f], data.face_directions[f], n, degree));
+    const V3& d = data.face_directions[f];
+    off_plane = (std::max)(off_plane, std::abs(d[0] * n[0] + d[1] * n[1] + d[2] * n[2]));
+  }
+  report.check(worst < 1e-9 && off_plane < 1e-12,
+               what + ": face directions are in the face plane and independent of each vertex's first direction");
+}
+
+int main()
+{
+  Test_report report("io");
+  Mesh sphere, torus;
+  make_icosphere(sphere, 3);
+  make_torus(torus, 2., 0.5, 40, 16);
+  check_round_trips(report, "icosphere", sphere, 4);
+  check_round_trips(report, "icosphere", sphere, 1);
+  check_round_trips(report, "icosphere", sphere, 3);
+
+  // A constant field on a planar disk: every face direction is that field.
+  {
+    Mesh disk;
+    make_disk(disk, 6);
+    std::vector<Vector_3> storage(disk.number_of_vertices(), Vector_3(std::cos(0.3), std::sin(0.3), 0.));
+    const std::vector<std::pair<Face_index, int> > none;
+    const SIO::Direction_field_data data =
+      SIO::make_direction_field_data(disk, CGAL::make_property_map(storage), 4, none);
+    double worst = 0.;
+    for(std::size_t f = 0; f < data.faces.size(); ++f)
+      worst = (std::max)(worst, angle_mod(data.face_directions[f], V3{std::cos(0.3), std::sin(0.3), 0.},
+                                          face_normal(data, f), 4));
+    report.check(worst < 1e-12, "a constant planar field is transferred to every face exactly");
+  }
+
+  // Bad input: clear errors, no crash.
+  {
+    std::istringstream not_vtk("hello\n");
+    bool thrown = false;
+    try { SIO::read_VTK(not_vtk); } catch(const SMDF::Invalid_input_error&) { thrown = true; }
+    report.check(thrown, "read_VTK rejects a file that is not VTK");
+    std::istringstream truncated("ply\nformat ascii 1.0\ncomment direction_field_degree 4\nelement vertex 3\n"
+                                 "element face 1\nend_header\n0 0 0 1 0 0\n");
+    thrown = false;
+    try { SIO::read_PLY(truncated); } catch(const SMDF::Invalid_input_error&) { thrown = true; }
+    report.check(thrown, "read_PLY rejects a truncated file");
+    std::istringstream wrong_count("5\n4\n1 0 0\n");
+    SIO::Direction_field_data three_faces;
+    three_faces.faces.resize(3);
+    thrown = false;
+    try { SIO::read_rosy(wrong_count, three_faces); } catch(const SMDF::Invalid_input_error&) { thrown = true; }
+    report.check(thrown, "read_rosy rejects a face count that does not match the mesh");
+  }
+  check_round_trips(report, "torus", torus, 4);
+  return report.finish();
+}
