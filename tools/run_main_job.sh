@@ -12,8 +12,9 @@ cmake --build build --target direction_field -j "$(nproc)" >> build/main_job.log
 mkdir -p build/main_job
 out=build/main_job
 build/bin/direction_field "$@" --directions $out/directions.txt --singularities $out/singularities.txt \
-                                --png $out/field.png --vtk $out/field.vtk --json-file $out/summary.json
+                                --png $out/field.png --vtk $out/field.vtk --json-file $out/summary.json \
+                                --streamlines $out/streamlines.txt
 echo
 echo "Wrote $out/directions.txt (one unit vector per vertex), $out/singularities.txt (face, index k of k/n),"
 echo "      $out/summary.json, the picture $out/field.png and $out/field.vtk (ParaView: all n directions,"
-echo "      magnitude, singularities with their index)"
+echo "      magnitude, singularities with their index), $out/streamlines.txt (field lines, drawn in the picture)"

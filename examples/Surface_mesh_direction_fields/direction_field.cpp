@@ -6,6 +6,7 @@
 //                   [--align none|curvature|min-curvature|max-curvature] [--guidance FILE]
 //                   [--lambda L | --alignment-weight T] [--constrain-boundary tangent|normal]
 //                   [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]
+//                   [--streamlines FILE]
 //
 // Computes the globally smoothest n-direction field of a mesh (OFF, OBJ, PLY
 // or STL) and its singular faces. The file is read as a polygon soup and
@@ -40,6 +41,10 @@
 //   --rosy FILE           the field moved to the faces, as read by vcglib/QuadWild
 //   --ffield FILE         the same as a per-face frame file (vcglib's .ffield)
 //   --singularity-list FILE  one line "face k n x y z" per singular face
+//   --streamlines FILE    field lines of the per-face field (streamlines.h), one
+//                         polyline per line: "N x1 y1 z1 ... xN yN zN" (CGAL's
+//                         polylines text format); with --png they are drawn
+//                         instead of the direction glyphs
 // Exit status 0 on success; otherwise 1, with one line on stderr.
 
 #include <CGAL/Simple_cartesian.h>
@@ -48,6 +53,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 
 #include "png_snapshot.h"
 #include "read_and_repair_mesh.h"
@@ -81,7 +87,7 @@ struct Options
   int degree = 4;
   double s = 0.;
   std::string directions, singularities, png, json_file;
-  std::string vtk, ply, rosy, ffield, singularity_list;
+  std::string vtk, ply, rosy, ffield, singularity_list, streamlines;
   bool json = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
@@ -100,7 +106,8 @@ const char* const usage =
   "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal]\n"
-  "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n";
+  "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
+  "                       [--streamlines FILE]\n";
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
@@ -144,6 +151,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--rosy") o.rosy = value();
     else if(a == "--ffield") o.ffield = value();
     else if(a == "--singularity-list") o.singularity_list = value();
+    else if(a == "--streamlines") o.streamlines = value();
     else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
     else if(o.mesh.empty()) o.mesh = a;
     else throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
@@ -343,7 +351,9 @@ int main(int argc, char** argv)
       for(const auto& fk : index_of_file_face)
         if(fk.second != 0) os << fk.first << " " << fk.second << "\n";
     }
-    if(!o.vtk.empty() || !o.ply.empty() || !o.rosy.empty() || !o.ffield.empty() || !o.singularity_list.empty())
+    std::vector<SMDF::Streamline> streamlines;
+    if(!o.vtk.empty() || !o.ply.empty() || !o.rosy.empty() || !o.ffield.empty() || !o.singularity_list.empty() ||
+       !o.streamlines.empty())
     {
       namespace SIO = SMDF::IO;
       const SIO::Direction_field_data data = SIO::make_direction_field_data(
@@ -361,6 +371,19 @@ int main(int argc, char** argv)
       write(o.rosy, [&](std::ostream& os) { SIO::write_rosy(os, data); });
       write(o.ffield, [&](std::ostream& os) { SIO::write_ffield(os, data); });
       write(o.singularity_list, [&](std::ostream& os) { SIO::write_singularities(os, data); });
+      if(!o.streamlines.empty())
+      {
+        streamlines = SMDF::trace_streamlines(data);
+        write(o.streamlines, [&](std::ostream& os) {
+          os << std::setprecision(17);
+          for(const SMDF::Streamline& l : streamlines)
+          {
+            os << l.points.size();
+            for(const auto& p : l.points) os << " " << p[0] << " " << p[1] << " " << p[2];
+            os << "\n";
+          }
+        });
+      }
     }
     if(!o.png.empty())
     {
@@ -379,6 +402,7 @@ int main(int argc, char** argv)
         for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = v;
         scene.triangles.push_back(t);
       }
+      for(const SMDF::Streamline& l : streamlines) scene.polylines.push_back(l.points);
       scene.face_index.assign(mesh.number_of_faces(), 0);
       for(const auto& fk : singular_faces) scene.face_index[static_cast<std::size_t>(fk.first)] = fk.second;
       if(!png_snapshot::render(scene, o.png))

@@ -31,6 +31,7 @@ struct Scene
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<V3> directions;       // one unit tangent vector per vertex (zero: none)
   std::vector<int> face_index;      // integer index k per face (0: regular)
+  std::vector<std::vector<V3> > polylines;  // streamlines; when given, drawn instead of the glyphs
   int degree = 1;
 };
 
@@ -233,9 +234,12 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
   }
   const double glyph = (std::min)(0.45 * cell / scale, 1.5 * mean_edge);
   const double pi = 3.14159265358979323846;
+  for(const auto& polyline : s.polylines)
+    for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+      canvas.line(project(polyline[i]), project(polyline[i + 1]), {20, 60, 70}, 3.);
   for(long ci : chosen)
   {
-    if(ci < 0) continue;
+    if(ci < 0 || !s.polylines.empty()) continue;
     const std::size_t i = static_cast<std::size_t>(ci);
     const V3 n = unit(normals[i]);
     const V3 d = s.directions[i];

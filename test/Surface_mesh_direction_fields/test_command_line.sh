@@ -91,7 +91,8 @@ done
 #     independently of the package's readers: counts, unit vectors, the n
 #     directions 2 pi / n apart, singularities summing to n chi.
 "$bin" "$out/octahedron.off" --degree 4 --vtk "$out/oct.vtk" --ply "$out/oct.ply" --rosy "$out/oct.rosy" \
-       --ffield "$out/oct.ffield" --singularity-list "$out/oct.sing" --singularities "$out/oct_sing.txt" --json > "$out/oct_files.json"
+       --ffield "$out/oct.ffield" --singularity-list "$out/oct.sing" --singularities "$out/oct_sing.txt" \
+       --streamlines "$out/oct_lines.txt" --json > "$out/oct_files.json"
 check "exchange files run exits 0" test $? -eq 0
 check "exchange files: VTK, PLY, rosy, ffield, singularity list" python_checks "$out" <<'EOF'
 import math, sys
@@ -128,6 +129,11 @@ for l in ff[4:12]:
 assert sum(int(l[1]) for l in sing) == 8 and all(l[2] == "4" for l in sing)
 old = [l.split() for l in open(out + "/oct_sing.txt") if l.strip()]
 assert sorted((int(f), int(k)) for f, k in old) == sorted((int(l[0]), int(l[1])) for l in sing)
+lines = [list(map(float, l.split())) for l in open(out + "/oct_lines.txt") if l.strip()]
+assert len(lines) > 0
+for l in lines:   # "N x1 y1 z1 ... xN yN zN", points on the octahedron |x|+|y|+|z| = 1
+    n = int(l[0]); assert n >= 2 and len(l) == 1 + 3 * n
+    assert all(abs(sum(abs(c) for c in l[1 + 3 * i:4 + 3 * i]) - 1) < 1e-9 for i in range(n))
 EOF
 
 # 3. An isolated vertex first: its line is the zero vector, the others follow in file order.

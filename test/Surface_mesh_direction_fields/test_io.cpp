@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -186,6 +188,117 @@ static void check_round_trips(Test_report& report, const std::string& name, cons
                what + ": face directions are in the face plane and independent of each vertex's first direction");
 }
 
+// Streamlines: on the surface, along the per-face field, never inside a
+// singular face, ending where they say they end.
+static void check_streamlines(Test_report& report, const std::string& name, const Mesh& mesh, int degree,
+                              bool expect_boundary, bool expect_singularity)
+{
+  std::vector<Vector_3> storage(mesh.number_of_vertices());
+  auto dir = CGAL::make_property_map(storage);
+  std::vector<std::pair<Face_index, int> > singular;
+  SMDF::compute_globally_optimal_directions(
+    mesh, dir, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular)));
+  const SIO::Direction_field_data data = SIO::make_direction_field_data(mesh, dir, degree, singular);
+  SMDF::Streamline_options options;
+  options.seed_spacing = 0.1;
+  options.maximum_length = 0.7;
+  const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
+  const std::string what = name + " (n = " + std::to_string(degree) + ")";
+
+  V3 lo = data.points[0], hi = data.points[0];
+  for(const V3& p : data.points) for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
+  const double diagonal = distance(lo, hi);
+  std::vector<char> is_singular(data.faces.size(), 0);
+  for(const auto& s : data.singularities) is_singular[s.first] = 1;
+  // boundary edges and edges of singular faces, as vertex pairs
+  std::map<std::pair<std::size_t, std::size_t>, int> edge_count;
+  for(const auto& t : data.faces)
+    for(int c = 0; c < 3; ++c) ++edge_count[std::minmax(t[c], t[(c + 1) % 3])];
+  auto on_edge = [&](const V3& p, std::size_t a, std::size_t b) {
+    const V3& A = data.points[a];
+    const V3& B = data.points[b];
+    const V3 e{B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    const double t = ((p[0] - A[0]) * e[0] + (p[1] - A[1]) * e[1] + (p[2] - A[2]) * e[2]) / (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const V3 q{A[0] + t * e[0], A[1] + t * e[1], A[2] + t * e[2]};
+    return t > -1e-9 && t < 1. + 1e-9 && distance(p, q) < 1e-9 * diagonal;
+  };
+  // p in the triangle f: in its plane and with non-negative barycentric coordinates
+  auto in_face = [&](const V3& p, std::size_t f) {
+    const auto& t = data.faces[f];
+    const V3 n = face_normal(data, f);
+    const V3& A = data.points[t[0]];
+    if(std::abs((p[0] - A[0]) * n[0] + (p[1] - A[1]) * n[1] + (p[2] - A[2]) * n[2]) > 1e-9 * diagonal) return false;
+    for(int c = 0; c < 3; ++c)
+    {
+      const V3& a = data.points[t[c]];
+      const V3& b = data.points[t[(c + 1) % 3]];
+      const V3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+      const V3 x{e[1] * ap[2] - e[2] * ap[1], e[2] * ap[0] - e[0] * ap[2], e[0] * ap[1] - e[1] * ap[0]};
+      if((x[0] * n[0] + x[1] * n[1] + x[2] * n[2]) < -1e-9 * diagonal * diagonal) return false;
+    }
+    return true;
+  };
+  bool on_surface = true, follows = true, avoids = true, ends_ok = true, saw_boundary = false, saw_singularity = false;
+  double worst_angle = 0.;
+  for(const SMDF::Streamline& l : lines)
+  {
+    for(std::size_t i = 0; i + 1 < l.points.size(); ++i)
+    {
+      const std::size_t f = l.faces[i];
+      on_surface = on_surface && in_face(l.points[i], f) && in_face(l.points[i + 1], f);
+      avoids = avoids && !is_singular[f];
+      const V3 s{l.points[i + 1][0] - l.points[i][0], l.points[i + 1][1] - l.points[i][1], l.points[i + 1][2] - l.points[i][2]};
+      const double len = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+      if(len > 1e-12 * diagonal)
+        worst_angle = (std::max)(worst_angle, angle_mod(V3{s[0] / len, s[1] / len, s[2] / len}, data.face_directions[f],
+                                                        face_normal(data, f), degree));
+    }
+    // each end: on a boundary edge, on an edge of a singular face, or at the length limit
+    for(int side = 0; side < 2; ++side)
+    {
+      const SMDF::Streamline::End end = side == 0 ? l.start_end : l.finish_end;
+      const V3& p = side == 0 ? l.points.front() : l.points.back();
+      const std::size_t f = side == 0 ? l.faces.front() : l.faces.back();
+      const auto& t = data.faces[f];
+      if(end == SMDF::Streamline::End::BOUNDARY)
+      {
+        saw_boundary = true;
+        bool found = false;
+        for(int c = 0; c < 3; ++c)
+          found = found || (edge_count[std::minmax(t[c], t[(c + 1) % 3])] == 1 && on_edge(p, t[c], t[(c + 1) % 3]));
+        ends_ok = ends_ok && found;
+      }
+      else if(end == SMDF::Streamline::End::SINGULARITY)
+      {
+        saw_singularity = true;
+        bool found = false;  // p is on an edge of f shared with a singular face
+        for(std::size_t g = 0; g < data.faces.size(); ++g)
+          if(is_singular[g])
+            for(int c = 0; c < 3; ++c)
+              found = found || on_edge(p, data.faces[g][c], data.faces[g][(c + 1) % 3]);
+        ends_ok = ends_ok && found;
+      }
+      else if(end == SMDF::Streamline::End::TURNED_BACK)
+      {
+        bool found = false;  // p is on an edge of its last face
+        for(int c = 0; c < 3; ++c) found = found || on_edge(p, t[c], t[(c + 1) % 3]);
+        ends_ok = ends_ok && found;
+      }
+      else
+        ends_ok = ends_ok && end == SMDF::Streamline::End::LENGTH;
+    }
+  }
+  follows = worst_angle < CGAL_PI / 180.;
+  report.check(!lines.empty(), what + ": " + std::to_string(lines.size()) + " streamlines");
+  report.check(on_surface, what + ": every streamline point lies in its face (within 1e-9 of the diagonal)");
+  report.check(follows, what + ": every segment follows its face's field (worst " + std::to_string(worst_angle) + " rad)");
+  report.check(avoids, what + ": no segment inside a singular face");
+  report.check(ends_ok, what + ": each end is on a boundary edge, on a singular face's edge, on the edge where "
+                                "the field turns back, or at the length limit");
+  if(expect_boundary) report.check(saw_boundary, what + ": some streamlines end at the boundary");
+  if(expect_singularity) report.check(saw_singularity, what + ": some streamlines end at a singularity");
+}
+
 int main()
 {
   Test_report report("io");
@@ -230,5 +343,15 @@ int main()
     report.check(thrown, "read_rosy rejects a face count that does not match the mesh");
   }
   check_round_trips(report, "torus", torus, 4);
+
+  check_streamlines(report, "icosphere", sphere, 4, false, true);
+  check_streamlines(report, "icosphere", sphere, 1, false, true);
+  check_streamlines(report, "torus", torus, 2, false, false);
+  {
+    Mesh disk;
+    make_disk(disk, 10);
+    check_streamlines(report, "disk", disk, 4, true, false);
+    check_streamlines(report, "disk", disk, 3, true, false);
+  }
   return report.finish();
 }
