@@ -63,8 +63,10 @@ struct Streamline
   std::vector<std::array<double, 3> > points;
   /// the face of each segment
   std::vector<std::size_t> faces;
-  /// how the line ends at its first and at its last point
-  End start_end = End::LENGTH, finish_end = End::LENGTH;
+  /// how the line ends at its first point (`LENGTH` for a line traced forwards only: its seed)
+  End start_end = End::LENGTH;
+  /// how the line ends at its last point
+  End finish_end = End::LENGTH;
 };
 
 namespace internal {

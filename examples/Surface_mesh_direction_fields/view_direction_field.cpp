@@ -1,0 +1,43 @@
+// Shows the smoothest cross field of a mesh in CGAL's basic viewer: the four
+// directions at each vertex, the singular faces (red: +, blue: -), then a
+// second window with the field lines.
+//   usage: view_direction_field [MESH] [n]
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/draw_direction_field.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+
+int main(int argc, char** argv)
+{
+  const std::string path = argc > 1 ? argv[1] : CGAL::data_file_path("meshes/fandisk.off");
+  const int degree = argc > 2 ? std::atoi(argv[2]) : 4;
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || !CGAL::is_triangle_mesh(mesh))
+  {
+    std::cerr << "cannot read a triangle mesh from " << path << std::endl;
+    return EXIT_FAILURE;
+  }
+  auto direction = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:direction").first;
+  std::vector<std::pair<Mesh::Face_index, int> > singularities;
+  SMDF::compute_globally_optimal_directions(
+    mesh, direction, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singularities)));
+
+  CGAL::draw(mesh, direction, singularities, CGAL::parameters::degree(degree));
+
+  const SMDF::IO::Direction_field_data data = SMDF::IO::make_direction_field_data(mesh, direction, degree, singularities);
+  const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data);
+  std::cout << singularities.size() << " singular faces, " << lines.size() << " field lines" << std::endl;
+  SMDF::draw_direction_field(data, lines, "Field lines");
+  return lines.empty() ? EXIT_FAILURE : EXIT_SUCCESS;
+}

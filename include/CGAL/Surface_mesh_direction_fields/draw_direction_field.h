@@ -1,0 +1,173 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_DRAW_DIRECTION_FIELD_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_DRAW_DIRECTION_FIELD_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
+
+#ifdef DOXYGEN_RUNNING
+
+namespace CGAL {
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+opens a window (CGAL's basic viewer) showing `tmesh`, its direction field and
+its singularities, following the convention of CGAL's `draw()` functions: the
+call blocks until the window is closed. Each vertex shows its `n` directions
+as short segments (0.4 times the mean edge length); singular faces are red
+(positive index) or blue (negative index), the others grey.
+
+Available when the macro `CGAL_USE_BASIC_VIEWER` is defined: link with the CMake
+target `CGAL::CGAL_Basic_viewer` (Debian's `libcgal-qt5-dev`). When the
+environment variable `CGAL_TEST_SUITE` is set, nothing is shown.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam VertexDirectionMap a `ReadablePropertyMap` from vertices to a 3D vector type
+\tparam SingularityRange a range of `std::pair<face_descriptor, int>`
+
+\param tmesh the mesh
+\param direction_map the first direction of each vertex (as written by `compute_globally_optimal_directions()`)
+\param singularities the singular faces with their integers `k`
+\param np named parameters: `degree` (default 1), and those of `make_direction_field_data()`
+*/
+template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange, typename NamedParameters>
+void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const SingularityRange& singularities,
+          const NamedParameters& np);
+
+namespace Surface_mesh_direction_fields {
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+the same scene from plain data, with field lines (`trace_streamlines()`) drawn
+in dark blue-green.
+
+\param data the field with its mesh
+\param streamlines the lines to draw (may be empty)
+\param title the title of the window
+*/
+void draw_direction_field(const IO::Direction_field_data& data, const std::vector<Streamline>& streamlines,
+                          const char* title = "Direction field");
+} // namespace Surface_mesh_direction_fields
+
+} // namespace CGAL
+
+#else // DOXYGEN_RUNNING
+
+#ifdef CGAL_USE_BASIC_VIEWER
+
+#include <CGAL/Qt/Basic_viewer_qt.h>
+#include <CGAL/Qt/init_ogl_context.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+class Direction_field_viewer : public CGAL::Basic_viewer_qt
+{
+  typedef CGAL::Basic_viewer_qt Base;
+  const IO::Direction_field_data& m_data;
+  const std::vector<Streamline>& m_lines;
+
+public:
+  Direction_field_viewer(QWidget* parent, const IO::Direction_field_data& data,
+                         const std::vector<Streamline>& lines, const char* title)
+    : Base(parent, title, false, true, true, false, false), m_data(data), m_lines(lines)
+  {
+    compute_elements();
+  }
+
+private:
+  static Local_point point(const std::array<double, 3>& p) { return Local_point(p[0], p[1], p[2]); }
+
+  void compute_elements()
+  {
+    clear();
+    std::vector<int> index(m_data.faces.size(), 0);
+    for(const auto& s : m_data.singularities) index[s.first] = s.second;
+    double edge_sum = 0.;
+    for(std::size_t f = 0; f < m_data.faces.size(); ++f)
+    {
+      const auto& t = m_data.faces[f];
+      const CGAL::IO::Color color = index[f] > 0 ? CGAL::IO::Color(230, 40, 40)
+                                  : index[f] < 0 ? CGAL::IO::Color(40, 80, 230) : CGAL::IO::Color(200, 205, 215);
+      face_begin(color);
+      for(std::size_t v : t) add_point_in_face(point(m_data.points[v]));
+      face_end();
+      for(int c = 0; c < 3; ++c)
+      {
+        const auto d = IO::internal::sub(m_data.points[t[(c + 1) % 3]], m_data.points[t[c]]);
+        edge_sum += std::sqrt(IO::internal::dot3(d, d));
+      }
+    }
+    const double glyph = m_data.faces.empty() ? 0. : 0.4 * edge_sum / (3. * m_data.faces.size());
+    for(std::size_t v = 0; v < m_data.directions.size(); ++v)
+      for(const auto& d : m_data.directions[v])
+      {
+        if(IO::internal::dot3(d, d) == 0.) continue;
+        const auto& p = m_data.points[v];
+        add_segment(point(p), point({p[0] + glyph * d[0], p[1] + glyph * d[1], p[2] + glyph * d[2]}),
+                    CGAL::IO::Color(20, 20, 20));
+      }
+    for(const Streamline& l : m_lines)
+      for(std::size_t i = 0; i + 1 < l.points.size(); ++i)
+        add_segment(point(l.points[i]), point(l.points[i + 1]), CGAL::IO::Color(20, 90, 100));
+  }
+};
+
+} // namespace internal
+
+inline void draw_direction_field(const IO::Direction_field_data& data, const std::vector<Streamline>& streamlines,
+                                 const char* title = "Direction field")
+{
+#if defined(CGAL_TEST_SUITE)
+  const bool cgal_test_suite = true;
+#else
+  const bool cgal_test_suite = qEnvironmentVariableIsSet("CGAL_TEST_SUITE");
+#endif
+  if(cgal_test_suite) return;
+  CGAL::Qt::init_ogl_context(4, 3);
+  int argc = 1;
+  const char* argv[2] = {"direction_field_viewer", nullptr};
+  QApplication app(argc, const_cast<char**>(argv));
+  internal::Direction_field_viewer window(app.activeWindow(), data, streamlines, title);
+  window.show();
+  app.exec();
+}
+
+} // namespace Surface_mesh_direction_fields
+
+template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const SingularityRange& singularities,
+          const NamedParameters& np = parameters::default_values())
+{
+  const int degree = parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree), 1);
+  const Surface_mesh_direction_fields::IO::Direction_field_data data =
+    Surface_mesh_direction_fields::IO::make_direction_field_data(tmesh, direction_map, degree, singularities, np);
+  Surface_mesh_direction_fields::draw_direction_field(data, std::vector<Surface_mesh_direction_fields::Streamline>(),
+                                                      "Direction field");
+}
+
+} // namespace CGAL
+
+#endif // CGAL_USE_BASIC_VIEWER
+
+#endif // DOXYGEN_RUNNING
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_DRAW_DIRECTION_FIELD_H
