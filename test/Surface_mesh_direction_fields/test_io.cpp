@@ -344,6 +344,51 @@ int main()
   }
   check_round_trips(report, "torus", torus, 4);
 
+  // Mutated files: truncated, or with one character changed, every reader
+  // either reads them or throws Invalid_input_error -- nothing else.
+  {
+    std::vector<Vector_3> storage(sphere.number_of_vertices());
+    auto dir = CGAL::make_property_map(storage);
+    std::vector<std::pair<Face_index, int> > singular;
+    SMDF::compute_globally_optimal_directions(
+      sphere, dir, CGAL::parameters::degree(4).singularities_output_iterator(std::back_inserter(singular)));
+    const SIO::Direction_field_data data = SIO::make_direction_field_data(sphere, dir, 4, singular);
+    std::stringstream vtk, ply, rosy, ffield, sing;
+    SIO::write_VTK(vtk, data);
+    SIO::write_PLY(ply, data);
+    SIO::write_rosy(rosy, data);
+    SIO::write_ffield(ffield, data);
+    SIO::write_singularities(sing, data);
+    const std::vector<std::string> texts{vtk.str(), ply.str(), rosy.str(), ffield.str(), sing.str()};
+    std::size_t cases = 0, rejected = 0;
+    bool only_documented_errors = true;
+    unsigned long long state = 12345;
+    auto random = [&state]() { state = state * 6364136223846793005ULL + 1442695040888963407ULL; return state >> 33; };
+    for(std::size_t kind = 0; kind < texts.size(); ++kind)
+      for(int trial = 0; trial < 40; ++trial)
+      {
+        std::string text = texts[kind];
+        const std::size_t position = random() % text.size();
+        if(trial % 2 == 0) text.resize(position);
+        else text[position] = "x-9.e 0\n#"[random() % 10];
+        std::istringstream is(text);
+        ++cases;
+        try
+        {
+          SIO::Direction_field_data back = data;
+          if(kind == 0) SIO::read_VTK(is);
+          else if(kind == 1) SIO::read_PLY(is);
+          else if(kind == 2) SIO::read_rosy(is, back);
+          else if(kind == 3) SIO::read_ffield(is, back);
+          else SIO::read_singularities(is, back);
+        }
+        catch(const SMDF::Invalid_input_error&) { ++rejected; }
+        catch(...) { only_documented_errors = false; }
+      }
+    report.check(only_documented_errors, std::to_string(cases) + " mutated files: read or rejected with Invalid_input_error (" +
+                                           std::to_string(rejected) + " rejected)");
+  }
+
   check_streamlines(report, "icosphere", sphere, 4, false, true);
   check_streamlines(report, "icosphere", sphere, 1, false, true);
   check_streamlines(report, "torus", torus, 2, false, false);

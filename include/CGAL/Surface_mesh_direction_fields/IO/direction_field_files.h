@@ -159,6 +159,17 @@ inline std::string next_token(std::istream& is, const char* kind)
   return t;
 }
 
+// A number from a whole string, or Invalid_input_error.
+template <typename T>
+T parse_value(const std::string& t, const char* kind)
+{
+  std::istringstream ts(t);
+  T value;
+  if(!(ts >> value) || !ts.eof())
+    throw Invalid_input_error(std::string("unexpected '") + t + "' in " + kind + " file");
+  return value;
+}
+
 template <typename T>
 T next_value(std::istream& is, const char* kind)
 {
@@ -404,13 +415,19 @@ inline Direction_field_data read_VTK(std::istream& is)
   std::getline(is, line);
   const std::string key = "direction field of degree ";
   if(line.rfind(key, 0) != 0) throw Invalid_input_error("VTK file: not written by write_VTK()");
-  data.degree = std::stoi(line.substr(key.size()));
+  {
+    std::istringstream ls(line.substr(key.size()));
+    std::string word;
+    ls >> word;
+    data.degree = parse_value<int>(word, kind);
+  }
   check_degree(data.degree);
   expect(is, "ASCII", kind);
   expect(is, "DATASET", kind);
   expect(is, "POLYDATA", kind);
   expect(is, "POINTS", kind);
   const std::size_t np = next_value<std::size_t>(is, kind);
+  if(np > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
   next_token(is, kind);  // type
   std::vector<V3> points(np);
   for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
@@ -450,7 +467,7 @@ inline Direction_field_data read_VTK(std::istream& is)
     {
       const std::string name = next_token(is, kind);
       next_token(is, kind);
-      const int k = std::stoi(name.substr(name.find('_') + 1));
+      const int k = parse_value<int>(name.substr(name.find('_') + 1), kind);
       if(k < 0 || k >= data.degree) throw Invalid_input_error("VTK file: unexpected " + name);
       for(std::size_t v = 0; v < np; ++v)
       {
@@ -510,7 +527,8 @@ inline Direction_field_data read_VTK(std::istream& is)
       const V3 d = sub(b, data.singularity_points[i]);
       if(dot3(d, d) < best_distance) { best_distance = dot3(d, d); best = f; }
     }
-    data.singularities.emplace_back(best, static_cast<int>(std::lround(singularity_values.at(i) * data.degree)));
+    if(i >= singularity_values.size()) throw Invalid_input_error("VTK file: no singularity_index for a singularity point");
+    data.singularities.emplace_back(best, static_cast<int>(std::lround(singularity_values[i] * data.degree)));
   }
   data.face_directions = face_directions(data);
   return data;
@@ -587,13 +605,15 @@ inline Direction_field_data read_PLY(std::istream& is)
     std::string a, b, c;
     ls >> a >> b >> c;
     if(a == "format" && b != "ascii") throw Invalid_input_error("PLY file: only ASCII is read");
-    if(a == "comment" && b == "direction_field_degree") { data.degree = std::stoi(c); degree_found = true; }
-    if(a == "element" && b == "vertex") nv = std::stoul(c);
-    if(a == "element" && b == "face") nf = std::stoul(c);
+    if(a == "comment" && b == "direction_field_degree") { data.degree = parse_value<int>(c, kind); degree_found = true; }
+    if(a == "element" && b == "vertex") nv = parse_value<std::size_t>(c, kind);
+    if(a == "element" && b == "face") nf = parse_value<std::size_t>(c, kind);
     if(a == "property" && c == "magnitude") has_magnitude = true;
     if(a == "end_header") break;
   }
   if(!degree_found) throw Invalid_input_error("PLY file: no 'comment direction_field_degree'");
+  if(nv > (std::size_t(1) << 32) || nf > (std::size_t(1) << 32))
+    throw Invalid_input_error("PLY file: implausible element count");
   check_degree(data.degree);
   data.points.resize(nv);
   std::vector<V3> first(nv);
@@ -667,6 +687,7 @@ inline void read_rosy(std::istream& is, Direction_field_data& data)
   if(!data.faces.empty() && nf != data.faces.size())
     throw Invalid_input_error("rosy file: " + std::to_string(nf) + " faces for a mesh of " +
                               std::to_string(data.faces.size()));
+  if(nf > (std::size_t(1) << 32)) throw Invalid_input_error("rosy file: implausible face count");
   data.degree = next_value<int>(is, "rosy");
   check_degree(data.degree);
   data.face_directions.resize(nf);
@@ -720,6 +741,7 @@ inline void read_ffield(std::istream& is, Direction_field_data& data)
   if(!std::getline(is, line) || line.empty() || line[0] != '#') throw Invalid_input_error("not an ffield file");
   std::getline(is, line);  // "target frame"
   const std::size_t nf = next_value<std::size_t>(is, "ffield");
+  if(nf > (std::size_t(1) << 32)) throw Invalid_input_error("ffield file: implausible face count");
   if(!data.faces.empty() && nf != data.faces.size())
     throw Invalid_input_error("ffield file: " + std::to_string(nf) + " faces for a mesh of " +
                               std::to_string(data.faces.size()));
