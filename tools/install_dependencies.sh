@@ -3,7 +3,7 @@
 #   usage: install_dependencies.sh [main|tests]
 set -euo pipefail
 packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
-          libsuitesparse-dev libopenblas-dev libtbb-dev)
+          libsuitesparse-dev libopenblas-dev libtbb-dev zlib1g-dev)
 if [ "${1:-main}" = tests ]; then
   packages+=(doxygen python3 libopenmesh-dev libcgal-qt5-dev)
 fi
