@@ -290,6 +290,18 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
   }
   follows = worst_angle < CGAL_PI / 180.;
   report.check(!lines.empty(), what + ": " + std::to_string(lines.size()) + " streamlines");
+  // the same lines as CGAL polylines of the mesh's point type
+  std::vector<std::vector<Kernel::Point_3> > polylines;
+  SMDF::trace_streamlines(mesh, dir, degree, singular, std::back_inserter(polylines), options);
+  bool same_polylines = polylines.size() == lines.size();
+  for(std::size_t i = 0; same_polylines && i < lines.size(); ++i)
+  {
+    same_polylines = polylines[i].size() == lines[i].points.size();
+    for(std::size_t j = 0; same_polylines && j < polylines[i].size(); ++j)
+      same_polylines = polylines[i][j].x() == lines[i].points[j][0] && polylines[i][j].y() == lines[i].points[j][1] &&
+                       polylines[i][j].z() == lines[i].points[j][2];
+  }
+  report.check(same_polylines, what + ": the polyline output gives the same lines as Point_3 vectors");
   report.check(on_surface, what + ": every streamline point lies in its face (within 1e-9 of the diagonal)");
   report.check(follows, what + ": every segment follows its face's field (worst " + std::to_string(worst_angle) + " rad)");
   report.check(avoids, what + ": no segment inside a singular face");

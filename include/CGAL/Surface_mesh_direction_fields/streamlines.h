@@ -265,6 +265,46 @@ inline std::vector<Streamline> trace_streamlines(const IO::Direction_field_data&
   return lines;
 }
 
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+traces the field lines of a field computed on `tmesh` and writes them as CGAL
+polylines: one `std::vector<Point>` per line to `out`, where `Point` is the
+point type of `tmesh` (the value type of its vertex point map). Same lines as
+`trace_streamlines(make_direction_field_data(tmesh, direction_map, degree, singularities, np), options)`.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam VertexDirectionMap a `ReadablePropertyMap` from vertices to a 3D vector type
+\tparam SingularityRange a range of `std::pair<face_descriptor, int>`
+\tparam PolylineOutputIterator an output iterator accepting `std::vector<Point>`
+
+\param tmesh the mesh
+\param direction_map the first direction of each vertex
+\param degree the degree `n` of the field
+\param singularities the singular faces and their integers `k`
+\param out receives the polylines
+\param options seed spacing and maximum length
+\returns the output iterator past the last polyline
+*/
+template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange,
+          typename PolylineOutputIterator>
+PolylineOutputIterator trace_streamlines(const TriangleMesh& tmesh, VertexDirectionMap direction_map, int degree,
+                                         const SingularityRange& singularities, PolylineOutputIterator out,
+                                         const Streamline_options& options = Streamline_options())
+{
+  typedef typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  const IO::Direction_field_data data = IO::make_direction_field_data(tmesh, direction_map, degree, singularities);
+  for(const Streamline& line : trace_streamlines(data, options))
+  {
+    std::vector<Point> polyline;
+    polyline.reserve(line.points.size());
+    for(const auto& p : line.points) polyline.push_back(Point(p[0], p[1], p[2]));
+    *out++ = std::move(polyline);
+  }
+  return out;
+}
+
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
