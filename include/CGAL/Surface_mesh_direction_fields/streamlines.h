@@ -148,8 +148,7 @@ inline std::vector<Streamline> trace_streamlines(const IO::Direction_field_data&
   std::vector<V> normal(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const auto& t = data.faces[f];
-    normal[f] = unit(cross3(sub(data.points[t[1]], data.points[t[0]]), sub(data.points[t[2]], data.points[t[0]])));
+    normal[f] = face_unit_normal(data.points, data.faces[f]);
   }
   const int n = data.degree;
   // the field direction of face f closest to w (w in the plane of f)
@@ -231,9 +230,7 @@ inline std::vector<Streamline> trace_streamlines(const IO::Direction_field_data&
   for(std::size_t f = 0; f < nf; ++f)
   {
     if(singular[f]) continue;
-    const auto& t = data.faces[f];
-    V seed{0., 0., 0.};
-    for(std::size_t v : t) for(int k = 0; k < 3; ++k) seed[k] += data.points[v][k] / 3.;
+    const V seed = barycentre(data.points, data.faces[f]);
     if(!taken.emplace(cell_key(seed), 1).second) continue;
     for(int family = 0; family < families; ++family)
     {

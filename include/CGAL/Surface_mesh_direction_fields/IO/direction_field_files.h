@@ -96,6 +96,21 @@ inline V3 rotated(const V3& d, const V3& n, double angle)
           std::cos(angle) * d[2] + std::sin(angle) * nd[2]};
 }
 
+typedef std::array<std::size_t, 3> Triangle;
+
+inline V3 barycentre(const std::vector<V3>& points, const Triangle& t)
+{
+  V3 b{0., 0., 0.};
+  for(std::size_t c : t) for(int i = 0; i < 3; ++i) b[i] += points[c][i] / 3.;
+  return b;
+}
+
+// The unit normal of a counter-clockwise triangle.
+inline V3 face_unit_normal(const std::vector<V3>& points, const Triangle& t)
+{
+  return unit(cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]])));
+}
+
 // The minimal rotation taking the unit vector a to the unit vector b, applied to v.
 inline V3 rotate_onto(const V3& v, const V3& a, const V3& b)
 {
@@ -116,7 +131,7 @@ inline std::vector<V3> angle_weighted_normals(const std::vector<V3>& points,
   std::vector<V3> normal(points.size(), V3{0., 0., 0.});
   for(const auto& t : faces)
   {
-    const V3 n = unit(cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]])));
+    const V3 n = face_unit_normal(points, t);
     for(int c = 0; c < 3; ++c)
     {
       const V3 a = sub(points[t[(c + 1) % 3]], points[t[c]]);
@@ -277,10 +292,7 @@ Direction_field_data make_direction_field_data(const TriangleMesh& tmesh, Vertex
   {
     const std::size_t f = static_cast<std::size_t>(get(fim, fk.first));
     data.singularities.emplace_back(f, fk.second);
-    const auto& t = data.faces[f];
-    V3 b{0., 0., 0.};
-    for(std::size_t c : t) for(int i = 0; i < 3; ++i) b[i] += data.points[c][i] / 3.;
-    data.singularity_points.push_back(b);
+    data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
   }
   data.face_directions = face_directions(data);
   return data;
@@ -315,7 +327,7 @@ inline std::vector<std::array<double, 3> > face_directions(const Direction_field
   {
     const auto& t = data.faces[f];
     const V3 e = unit(sub(data.points[t[1]], data.points[t[0]]));
-    const V3 normal = unit(cross3(e, sub(data.points[t[2]], data.points[t[0]])));
+    const V3 normal = face_unit_normal(data.points, t);
     const V3 e_perp = cross3(normal, e);
     std::complex<double> sum(0., 0.);
     for(std::size_t v : t)
@@ -516,15 +528,16 @@ inline Direction_field_data read_VTK(std::istream& is)
     data.normals[v] = unit(sub(normal[v], scaled(d, dot3(normal[v], d))));
   }
   // singular faces: the face whose barycentre is the singularity point
+  std::vector<V3> centres;
+  if(ns > 0)
+    for(const auto& t : data.faces) centres.push_back(barycentre(data.points, t));
   for(std::size_t i = 0; i < ns; ++i)
   {
     std::size_t best = 0;
     double best_distance = std::numeric_limits<double>::infinity();
     for(std::size_t f = 0; f < nf; ++f)
     {
-      V3 b{0., 0., 0.};
-      for(std::size_t c : data.faces[f]) for(int j = 0; j < 3; ++j) b[j] += data.points[c][j] / 3.;
-      const V3 d = sub(b, data.singularity_points[i]);
+      const V3 d = sub(centres[f], data.singularity_points[i]);
       if(dot3(d, d) < best_distance) { best_distance = dot3(d, d); best = f; }
     }
     if(i >= singularity_values.size()) throw Invalid_input_error("VTK file: no singularity_index for a singularity point");
@@ -637,9 +650,7 @@ inline Direction_field_data read_PLY(std::istream& is)
     if(k != 0)
     {
       data.singularities.emplace_back(f, k);
-      V3 b{0., 0., 0.};
-      for(std::size_t c : data.faces[f]) for(int j = 0; j < 3; ++j) b[j] += data.points[c][j] / 3.;
-      data.singularity_points.push_back(b);
+      data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
     }
   }
   // the other directions: rotations about the angle-weighted normal
@@ -717,7 +728,7 @@ inline void write_ffield(std::ostream& os, const Direction_field_data& data)
   for(std::size_t f = 0; f < data.faces.size(); ++f)
   {
     const auto& t = data.faces[f];
-    const V3 normal = unit(cross3(sub(data.points[t[1]], data.points[t[0]]), sub(data.points[t[2]], data.points[t[0]])));
+    const V3 normal = face_unit_normal(data.points, t);
     const V3& u = data.face_directions[f];
     const V3 w = cross3(normal, u);
     os << "1 1 " << u[0] << " " << u[1] << " " << u[2] << " " << w[0] << " " << w[1] << " " << w[2] << "\n";
