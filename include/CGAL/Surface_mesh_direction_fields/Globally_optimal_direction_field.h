@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 
@@ -372,9 +373,14 @@ public:
 
     // --- directions in 3D
     auto construct_vector = m_traits.construct_vector_3_object();
+    // computed in parallel, written sequentially (a property map need not be thread-safe)
+    std::vector<internal::Vec3> directions(m_vertex_of_index.size());
+    internal::parallel_for_each_index(directions.size(), [&](std::size_t i) {
+      directions[i] = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], result.degree, m_normals[i]);
+    });
     for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
     {
-      const internal::Vec3 d = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], result.degree, m_normals[i]);
+      const internal::Vec3& d = directions[i];
       put(vertex_direction_map, m_vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
       if(m_mesh.fan_size(i) == 0)
         ++result.number_of_isolated_vertices;

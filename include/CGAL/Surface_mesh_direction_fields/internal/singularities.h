@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 
 #include <cmath>
@@ -49,8 +50,7 @@ inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& co
                                      const std::vector<std::complex<double> >& u)
 {
   std::vector<int> index(m.number_of_faces());
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-    index[f] = face_index(m, con, u, f);
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { index[f] = face_index(m, con, u, f); });
   return index;
 }
 
