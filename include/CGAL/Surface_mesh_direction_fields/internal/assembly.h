@@ -14,6 +14,9 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/assertions.h>
+#include <CGAL/use.h>
+
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
@@ -21,6 +24,7 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <complex>
 #include <vector>
 
@@ -197,26 +201,16 @@ inline void gather_column(const Indexed_mesh& m, const std::vector<Local_matrice
   column.resize(last + 1);
 }
 
-// Assembles A and M (both triangles stored, compressed column storage) of one
-// component from the local matrices of all faces: the pattern and the values
-// are written directly into the compressed arrays, without triplets.
-inline Energy_and_mass assemble_component(const Indexed_mesh& m, const std::vector<Local_matrices>& local,
-                                          const Component& comp, const std::vector<std::size_t>& local_index)
+// Writes the columns of A and M, whose sizes are given, directly into the
+// compressed arrays (in parallel: each column gathers its own entries).
+// Returns false if a column's size is not the given one.
+inline bool fill_columns(const Indexed_mesh& m, const std::vector<Local_matrices>& local, const Component& comp,
+                         const std::vector<std::size_t>& local_index,
+                         const std::vector<Complex_sparse_matrix::StorageIndex>& column_size, Energy_and_mass& em)
 {
   typedef Complex_sparse_matrix::StorageIndex Storage_index;
   const std::size_t nc = comp.vertices.size();
   const auto n = static_cast<Eigen::Index>(nc);
-  std::vector<Storage_index> column_size(nc);
-  parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
-    std::vector<Column_entry> column;
-    for(std::size_t jl = begin; jl < end; ++jl)
-    {
-      gather_column(m, local, local_index, comp.vertices[jl], column);
-      column_size[jl] = static_cast<Storage_index>(column.size());
-    }
-  });
-
-  Energy_and_mass em;
   em.energy.resize(n, n);
   em.mass.resize(n, n);
   std::size_t nnz = 0;
@@ -233,11 +227,17 @@ inline Energy_and_mass assemble_component(const Indexed_mesh& m, const std::vect
   Storage_index* inner_m = em.mass.innerIndexPtr();
   Complex* value_a = em.energy.valuePtr();
   Complex* value_m = em.mass.valuePtr();
+  std::vector<unsigned char> size_ok(nc, 1);
   parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
     std::vector<Column_entry> column;
     for(std::size_t jl = begin; jl < end; ++jl)
     {
       gather_column(m, local, local_index, comp.vertices[jl], column);
+      if(column.size() != static_cast<std::size_t>(column_size[jl]))
+      {
+        size_ok[jl] = 0;
+        continue;
+      }
       Storage_index p = outer_a[jl];
       for(const Column_entry& e : column)
       {
@@ -248,6 +248,43 @@ inline Energy_and_mass assemble_component(const Indexed_mesh& m, const std::vect
       }
     }
   });
+  return std::find(size_ok.begin(), size_ok.end(), 0) == size_ok.end();
+}
+
+// Assembles A and M (both triangles stored, compressed column storage) of one
+// component from the local matrices of all faces: the pattern and the values
+// are written directly into the compressed arrays, without triplets, in one
+// gathering pass when the fans have no multiple edge (two otherwise).
+inline Energy_and_mass assemble_component(const Indexed_mesh& m, const std::vector<Local_matrices>& local,
+                                          const Component& comp, const std::vector<std::size_t>& local_index)
+{
+  typedef Complex_sparse_matrix::StorageIndex Storage_index;
+  const std::size_t nc = comp.vertices.size();
+  // The size of each column: on a manifold fan, v and one neighbour per
+  // corner, plus one more at a boundary vertex. A fan can repeat a neighbour
+  // only through a multiple edge; the fill below detects it and the sizes are
+  // then counted by a gathering pass.
+  std::vector<Storage_index> column_size(nc);
+  for(std::size_t jl = 0; jl < nc; ++jl)
+  {
+    const std::size_t v = comp.vertices[jl];
+    column_size[jl] = static_cast<Storage_index>(1 + m.fan_size(v) + (m.is_border_vertex[v] ? 1 : 0));
+  }
+  Energy_and_mass em;
+  if(fill_columns(m, local, comp, local_index, column_size, em))
+    return em;
+  parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
+    std::vector<Column_entry> column;
+    for(std::size_t jl = begin; jl < end; ++jl)
+    {
+      gather_column(m, local, local_index, comp.vertices[jl], column);
+      column_size[jl] = static_cast<Storage_index>(column.size());
+    }
+  });
+
+  const bool filled = fill_columns(m, local, comp, local_index, column_size, em);
+  CGAL_assertion(filled);
+  CGAL_USE(filled);
   return em;
 }
 

@@ -164,15 +164,6 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
     return 3 * static_cast<std::size_t>(get(fim, f)) + static_cast<std::size_t>(c);
   };
 
-  for(auto f : faces(tm))
-  {
-    halfedge_descriptor h = halfedge(f, tm);
-    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
-    for(int c = 0; c < 3; ++c, h = next(h, tm))
-      if(!is_border(opposite(h, tm), tm))
-        m.twin_corner[3 * fi + c] = corner_of(opposite(h, tm));
-  }
-
   m.fan_offsets.assign(nv + 1, 0);
   m.is_border_vertex.assign(nv, 0);
   m.fan_corners.reserve(3 * nf);
@@ -181,6 +172,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
   for(auto v : vertices(tm))
     vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
 
+  std::vector<std::size_t> clockwise;  // the corners of an open fan before the start, clockwise
   for(std::size_t i = 0; i < nv; ++i)
   {
     m.fan_offsets[i] = m.fan_corners.size();
@@ -189,32 +181,51 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
     if(hv == GT::null_halfedge() || incident_faces[i] == 0)
       continue;  // isolated vertex: empty fan
 
-    // Outgoing halfedges of v are the opposites of the halfedges around target v.
-    halfedge_descriptor start = opposite(hv, tm);
-    for(halfedge_descriptor h : halfedges_around_target(hv, tm))
-    {
-      const halfedge_descriptor out = opposite(h, tm);
-      if(!is_border(out, tm) && is_border(h, tm))
-      {
-        start = out;  // the interior lies on the left of `out`, the border on its right
-        m.is_border_vertex[i] = 1;
-        break;
-      }
-    }
-    if(is_border(start, tm))  // only possible if every halfedge around v is a border one
-      throw Invalid_input_error("vertex " + std::to_string(i) + " is non-manifold");
-
+    // Walk counter-clockwise through the corners of v from one outgoing
+    // halfedge (the next outgoing halfedge is opposite(prev(h))). Reaching a
+    // border halfedge means the fan is open: its beginning is then found by
+    // walking clockwise from the start (next(opposite(h))), so every halfedge
+    // of the fan is visited once.
+    const halfedge_descriptor start = opposite(hv, tm);
+    const std::size_t bound = incident_faces[i] + 1;  // guards the walks on broken meshes
     halfedge_descriptor h = start;
+    bool open = false;
     do
     {
+      if(is_border(h, tm)) { open = true; break; }
       m.fan_corners.push_back(corner_of(h));
       h = opposite(prev(h, tm), tm);
     }
-    while(h != start && !is_border(h, tm) && m.fan_corners.size() - m.fan_offsets[i] <= incident_faces[i]);
+    while(h != start && m.fan_corners.size() - m.fan_offsets[i] <= bound);
+    if(open)
+    {
+      m.is_border_vertex[i] = 1;
+      clockwise.clear();
+      for(halfedge_descriptor g = start; !is_border(opposite(g, tm), tm) && clockwise.size() <= bound;)
+      {
+        g = next(opposite(g, tm), tm);
+        if(g == start) break;
+        clockwise.push_back(corner_of(g));
+      }
+      m.fan_corners.insert(m.fan_corners.begin() + static_cast<std::ptrdiff_t>(m.fan_offsets[i]), clockwise.rbegin(),
+                           clockwise.rend());
+    }
 
     if(m.fan_corners.size() - m.fan_offsets[i] != incident_faces[i])
       throw Invalid_input_error("vertex " + std::to_string(i) +
                                 " is non-manifold (its incident faces do not form a single fan)");
+
+    // Twins from the fan: corner k at v has third vertex b, and the next corner
+    // k2 counter-clockwise has first side v -> b, the reverse of the first side
+    // b -> v of previous_corner(k). Every inner edge is met this way.
+    const std::size_t first = m.fan_offsets[i], count = m.fan_corners.size() - first;
+    for(std::size_t a = 0; a < count; ++a)
+    {
+      if(open && a + 1 == count) break;  // no corner after the last one of an open fan
+      const std::size_t k = m.fan_corners[first + a], k2 = m.fan_corners[first + (a + 1) % count];
+      m.twin_corner[Indexed_mesh::previous_corner(k)] = k2;
+      m.twin_corner[k2] = Indexed_mesh::previous_corner(k);
+    }
   }
   m.fan_offsets[nv] = m.fan_corners.size();
 
