@@ -9,6 +9,8 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "generated_meshes.h"
@@ -270,6 +272,45 @@ static void check_sphere_eigenvalues(Test_report& report)
     }
 }
 
+// The gathering assembly (column by column, sizes taken from the fans) equals a
+// plain scatter of the local matrices, face by face, into triplets -- also on a
+// mesh whose fans meet a neighbour through two different edges (a multiple
+// edge: the assembly must detect it and count the column sizes).
+static void check_assembly_against_scatter(Test_report& report, const std::string& name, const Mesh& mesh)
+{
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m, 1e-6);
+  const SI::Connection con = SI::compute_connection(m, ts, 4);
+  const SI::Components comps = SI::split_into_components(m);
+  const double s = 0.3;
+  const SI::Energy_and_mass em = SI::assemble_energy_and_mass(m, ts, con, comps.list[0], comps.local_index, s);
+  std::vector<Eigen::Triplet<SI::Complex> > energy, mass;
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    const SI::Local_matrices lm = SI::local_matrices(ts, con, f, s);
+    for(int c = 0; c < 3; ++c)
+    {
+      const auto i = static_cast<Eigen::Index>(comps.local_index[m.faces[f][c]]);
+      const auto j = static_cast<Eigen::Index>(comps.local_index[m.faces[f][(c + 1) % 3]]);
+      const auto k = static_cast<Eigen::Index>(comps.local_index[m.faces[f][(c + 2) % 3]]);
+      energy.emplace_back(i, i, lm.energy_diagonal[c]);
+      mass.emplace_back(i, i, lm.mass_diagonal[c]);
+      energy.emplace_back(k, j, lm.energy_pair[c]);
+      energy.emplace_back(j, k, std::conj(lm.energy_pair[c]));
+      mass.emplace_back(k, j, lm.mass_pair[c]);
+      mass.emplace_back(j, k, std::conj(lm.mass_pair[c]));
+    }
+  }
+  const Eigen::Index n = em.energy.rows();
+  SI::Complex_sparse_matrix A(n, n), M(n, n);
+  A.setFromTriplets(energy.begin(), energy.end());
+  M.setFromTriplets(mass.begin(), mass.end());
+  report.check(em.energy.nonZeros() == A.nonZeros() && em.mass.nonZeros() == M.nonZeros(),
+               name + ": the assembled pattern has the scattered number of entries");
+  report.check(max_abs(em.energy - A) <= 1e-14 * max_abs(A) && max_abs(em.mass - M) <= 1e-14 * max_abs(M),
+               name + ": gathered A and M equal the scattered ones");
+}
+
 int main()
 {
   Test_report report("matrices");
@@ -285,6 +326,19 @@ int main()
     check_connection(report, "disk", disk, n);
   }
   check_local_matrices_by_quadrature(report);
+  {
+    // A coarse torus with one edge collapsed across its 3 rings: the merged
+    // vertex reaches a neighbour through two different edges.
+    Mesh multiple;
+    make_torus(multiple, 2., 0.7, 6, 3);
+    CGAL::Euler::collapse_edge(multiple.edge(multiple.halfedge(Mesh::Vertex_index(0), Mesh::Vertex_index(1))), multiple);
+    multiple.collect_garbage();
+    report.check(CGAL::is_valid_polygon_mesh(multiple) && multiple.number_of_faces() == 34,
+                 "the collapsed torus is a valid mesh of 34 faces");
+    check_assembly_against_scatter(report, "torus with a multiple edge", multiple);
+    check_assembly_against_scatter(report, "torus 40 x 20", torus);
+    check_assembly_against_scatter(report, "disk", disk);
+  }
   for(int n : {1, 3, 4})
     check_planar_cotan_laplacian(report, n);
 
