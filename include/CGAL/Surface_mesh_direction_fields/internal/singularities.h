@@ -33,15 +33,18 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-inline int face_index(const Indexed_mesh& m, const Connection& con,
-                      const std::vector<std::complex<double> >& u, std::size_t f)
+// omega_ij = theta_j - theta_i - rho_ij reduced to (-pi, pi], from the angle
+// theta of each vertex coefficient, computed once per vertex. (The angle of
+// u_j conj(r_ij u_i) would be the same for nonzero coefficients, but a zero
+// coefficient would then give omega = 0 on both sides of an edge without a
+// common angle, and the face sums would no longer be multiples of 2 pi.)
+inline int face_index(const Indexed_mesh& m, const Connection& con, const std::vector<double>& theta, std::size_t f)
 {
   double total = con.holonomy[f];
   for(int c = 0; c < 3; ++c)
   {
-    const std::complex<double>& ui = u[m.faces[f][c]];
-    const std::complex<double>& uj = u[m.faces[f][(c + 1) % 3]];
-    total += std::arg(uj * std::conj(con.transport[3 * f + c] * ui));
+    const double rho = std::arg(con.transport[3 * f + c]);
+    total += std::remainder(theta[m.faces[f][(c + 1) % 3]] - theta[m.faces[f][c]] - rho, 2. * CGAL_PI);
   }
   return static_cast<int>(std::lround(total / (2. * CGAL_PI)));
 }
@@ -49,8 +52,10 @@ inline int face_index(const Indexed_mesh& m, const Connection& con,
 inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& con,
                                      const std::vector<std::complex<double> >& u)
 {
+  std::vector<double> theta(u.size());
+  parallel_for_each_index(u.size(), [&](std::size_t v) { theta[v] = std::arg(u[v]); });  // arg(0) = 0
   std::vector<int> index(m.number_of_faces());
-  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { index[f] = face_index(m, con, u, f); });
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { index[f] = face_index(m, con, theta, f); });
   return index;
 }
 
