@@ -95,13 +95,16 @@ inline Components split_into_components(const Indexed_mesh& m)
     {
       const std::size_t v = order[next];
       for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
-        for(std::size_t corner : {Indexed_mesh::next_corner(m.fan_corners[k]), Indexed_mesh::previous_corner(m.fan_corners[k])})
+      {
+        const std::size_t corner = m.fan_corners[k];
+        for(std::size_t other : {Indexed_mesh::next_corner(corner), Indexed_mesh::previous_corner(corner)})
         {
-          const std::size_t w = m.vertex_of_corner(corner);
+          const std::size_t w = m.vertex_of_corner(other);
           if(comps.local_index[w] != no_index) continue;
           comps.local_index[w] = order.size();
           order.push_back(w);
         }
+      }
     }
   }
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
