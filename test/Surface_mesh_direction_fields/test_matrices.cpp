@@ -5,7 +5,11 @@
 //    the phases of the vertex bases (A = P^* L P), and M is scale-covariant;
 //  * A and M are Hermitian, A is positive semi-definite for s = -1, 0, 1;
 //  * on a round sphere of radius R, lambda_1 = n (1 - s) / R^2 (pins every sign
-//    and conjugation of method.md, section 4).
+//    and conjugation of method.md, section 4);
+//  * the coarse estimate of the eigen-solve: the coarse matrices are P^* A P
+//    and P^* M P, the bound is >= lambda_1, and the shifted factorization (or
+//    its fallback, when the shift is too large) gives the eigenpair of the
+//    unshifted solve.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -337,9 +341,98 @@ static void check_index_sum_with_zero_coefficients(Test_report& report, const Me
   }
 }
 
+// The coarse estimate and the shifted factorization of the eigen-solve, with
+// the solver type `Solver`, on a mesh with a simple lambda_1.
+template <typename Solver>
+static void check_shifted_eigen_solve(Test_report& report, const std::string& solver_name, const Mesh& mesh, int n,
+                                      double s)
+{
+  const std::string name = solver_name + ", n = " + std::to_string(n) + ", s = " + std::to_string(s);
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
+  const SI::Connection con = SI::compute_connection(m, ts, n);
+  const SI::Components comps = SI::split_into_components(m);
+  const SI::Energy_and_mass em = SI::assemble_energy_and_mass(m, ts, con, comps.list[0], comps.local_index, s);
+  const SI::Complex_sparse_matrix& A = em.energy;
+  const SI::Complex_sparse_matrix& M = em.mass;
+  const Eigen::Index nv = A.rows();
+
+  // aggregates: a partition with unit phases, at most half as many as vertices
+  const SI::Aggregates g = SI::aggregate_vertices(M);
+  bool partition = 2 * g.count <= nv && static_cast<Eigen::Index>(g.of_vertex.size()) == nv;
+  for(Eigen::Index i = 0; i < nv; ++i)
+    partition = partition && g.of_vertex[static_cast<std::size_t>(i)] >= 0 &&
+                g.of_vertex[static_cast<std::size_t>(i)] < g.count && std::abs(std::abs(g.phase[i]) - 1.) < 1e-14;
+  report.check(partition, name + ": the aggregates partition the vertices, with unit phases (" +
+                            std::to_string(g.count) + " for " + std::to_string(nv) + " vertices)");
+
+  // the coarse matrices are the Galerkin projections P^* A P and P^* M P
+  std::vector<Eigen::Triplet<SI::Complex> > p_entries;
+  for(Eigen::Index i = 0; i < nv; ++i) p_entries.emplace_back(i, g.of_vertex[static_cast<std::size_t>(i)], g.phase[i]);
+  SI::Complex_sparse_matrix P(nv, g.count);
+  P.setFromTriplets(p_entries.begin(), p_entries.end());
+  SI::Complex_sparse_matrix Ac, Mc;
+  SI::restrict_to_aggregates(A, M, g, Ac, Mc);
+  const SI::Complex_sparse_matrix PAP = SI::Complex_sparse_matrix(P.adjoint()) * A * P;
+  const SI::Complex_sparse_matrix PMP = SI::Complex_sparse_matrix(P.adjoint()) * M * P;
+  report.check(max_abs(Ac - PAP) <= 1e-13 * max_abs(PAP) && max_abs(Mc - PMP) <= 1e-13 * max_abs(PMP),
+               name + ": the coarse matrices are P^* A P and P^* M P");
+
+  // reference: no coarse estimate, A + epsilon M factored
+  SI::Eigen_solve_options plain;
+  plain.coarse_threshold = nv + 1;
+  Solver reference_solver;
+  SI::Factored_matrix<Solver> reference_factored(reference_solver);
+  const SI::Eigen_solve_result reference = SI::smallest_eigenpair(A, M, reference_factored, plain);
+  report.check(reference.converged && std::isnan(reference.eigenvalue_bound) && reference.shift > 0.,
+               name + ": without the coarse estimate, A + epsilon M is factored");
+
+  auto same_eigenpair = [&](const SI::Eigen_solve_result& r) {
+    const double overlap = std::abs(reference.vector.dot(M * r.vector));  // both M-normalized
+    return r.converged && std::abs(r.eigenvalue - reference.eigenvalue) <= 1e-8 * reference.eigenvalue &&
+           overlap >= 1. - 1e-8;
+  };
+  SI::Eigen_solve_options options;
+  Solver solver;
+  SI::Factored_matrix<Solver> factored(solver);
+  const SI::Eigen_solve_result shifted = SI::smallest_eigenpair(A, M, factored, options);
+  std::cout << name << ": lambda_1 = " << reference.eigenvalue << ", bound " << shifted.eigenvalue_bound << " ("
+            << shifted.eigenvalue_bound / reference.eigenvalue << " lambda_1), solves " << reference.iterations
+            << " -> " << shifted.iterations << " (+ " << shifted.coarse_iterations << " coarse)\n";
+  report.check(shifted.eigenvalue_bound >= reference.eigenvalue * (1. - 1e-12),
+               name + ": the coarse estimate bounds lambda_1 from above");
+  report.check(!shifted.shift_rejected && shifted.shift == -options.shift_fraction * shifted.eigenvalue_bound,
+               name + ": A - 0.6 R M is factored");
+  report.check(same_eigenpair(shifted), name + ": the shifted solve gives the eigenpair of the plain one");
+  report.check(shifted.iterations < reference.iterations, name + ": and needs fewer solves");
+
+  // a shift above lambda_1: detected, and A + epsilon M factored instead
+  options.shift_fraction = 4.;
+  Solver fallback_solver;
+  SI::Factored_matrix<Solver> fallback_factored(fallback_solver);
+  const SI::Eigen_solve_result fallback = SI::smallest_eigenpair(A, M, fallback_factored, options);
+  report.check(fallback.shift_rejected && fallback.shift == reference.shift,
+               name + ": a shift above lambda_1 is detected and replaced by epsilon");
+  report.check(same_eigenpair(fallback), name + ": the fallback gives the same eigenpair");
+}
+
 int main()
 {
   Test_report report("matrices");
+
+  {
+    Mesh lumpy;
+    make_lumpy_sphere(lumpy, 5);
+    typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<SI::Complex_sparse_matrix> > Ldlt;
+    report.check(SI::Factored_matrix<Ldlt>::detects_indefinite, "Eigen's LDLT detects indefinite matrices");
+    check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 4, 0.);
+    check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 1, 0.5);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+    typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Cholmod;
+    check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 4, 0.);
+    check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 2, -0.5);
+#endif
+  }
 
   Mesh sphere, torus, disk;
   make_icosphere(sphere, 3);

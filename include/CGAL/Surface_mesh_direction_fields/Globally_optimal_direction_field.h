@@ -98,7 +98,7 @@ calls the class keeps:
   the eigenvalue bound, which is also kept;
 - with `CGAL::Eigen_solver_traits` (the default), one solver per component whose
   symbolic analysis (fill-reducing ordering) is reused for every later
-  factorization of that component: the pattern of \f$ A + \epsilon M \f$ does not
+  factorization of that component: the pattern of \f$ A - \sigma M \f$ does not
   depend on `n` or `s`. This memory (one Cholesky factor per component) is
   held until the object is destroyed.
 
@@ -120,7 +120,7 @@ class Globally_optimal_direction_field
   typedef std::complex<double> Complex;
   typedef std::chrono::steady_clock Clock;
 
-  // A solver and its factorization, for one component's A + epsilon M.
+  // A solver and its factorization, for one component's A - sigma M.
   struct Component_factorization
   {
     SparseSolver solver;
@@ -429,7 +429,7 @@ private:
     }
   }
 
-  // The factorization of component c's A + epsilon M: the user's solver, or
+  // The factorization of component c's A - sigma M: the user's solver, or
   // the component's own one, whose symbolic analysis is reused.
   internal::Factored_matrix<SparseSolver>&
   eigen_factorization(std::size_t c, internal::Eigen_solve_options& options, bool user_solver)

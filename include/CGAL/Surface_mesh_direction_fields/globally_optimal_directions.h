@@ -212,8 +212,11 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{sparse_linear_solver}
-    \cgalParamDescription{the solver that factors the shifted energy matrix \f$ A + \epsilon M \f$ once per
-                          component and solves with it at each iteration}
+    \cgalParamDescription{the solver that factors the shifted energy matrix \f$ A - \sigma M \f$ once per
+                          component and solves with it at each iteration (\f$ \sigma \f$ just below
+                          \f$ \lambda_1 \f$ if the solver is one of Eigen's or CHOLMOD's Cholesky or
+                          \f$ LDL^* \f$ factorizations, which show whether the matrix is positive definite;
+                          else \f$ \sigma = -\epsilon \f$, a tiny negative shift)}
     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT`,
                    able to factor Hermitian positive definite matrices (both triangles are given)}
     \cgalParamDefault{`CGAL::Surface_mesh_direction_fields::Default_direction_field_solver`}

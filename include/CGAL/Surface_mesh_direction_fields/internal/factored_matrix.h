@@ -20,9 +20,14 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <complex>
 #include <type_traits>
+#include <utility>
 
 // The one place where the package talks to the sparse solver: factor a
 // Hermitian positive definite matrix once, then solve for blocks of
@@ -57,6 +62,10 @@ class Factored_matrix
   Eigen::Index m_n = 0;
 
 public:
+  // A solver seen only through CGAL's concept cannot tell whether the matrix
+  // it factored was positive definite.
+  static constexpr bool detects_indefinite = false;
+
   explicit Factored_matrix(SparseSolver& solver) : m_solver(solver) {}
 
   // `same_pattern` is a hint that the generic version ignores.
@@ -69,6 +78,21 @@ public:
         matrix.add_coef(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(it.col()), it.value());
     if(!m_solver.factor(matrix, m_D))
       throw Solver_failure_error("the sparse solver could not factor the matrix");
+  }
+
+  // Returns false where factor() throws: whether the matrix was positive
+  // definite stays unknown (see `detects_indefinite`).
+  bool factor_if_positive_definite(const Complex_sparse_matrix& S, bool same_pattern = false)
+  {
+    try
+    {
+      factor(S, same_pattern);
+    }
+    catch(const Solver_failure_error&)
+    {
+      return false;
+    }
+    return true;
   }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
@@ -86,6 +110,58 @@ public:
   }
 };
 
+// The Eigen solvers whose factorization of a matrix that is not positive
+// definite shows it: the Cholesky (LL^*) ones fail, and Eigen's LDL^* has a
+// non-positive pivot in D. (CHOLMOD's LDL^* factors indefinite matrices
+// without a word, like a general solver.)
+template <typename EigenSolver>
+struct Detects_indefinite : std::false_type
+{};
+template <typename Matrix, int UpLo, typename Ordering>
+struct Detects_indefinite<Eigen::SimplicialLLT<Matrix, UpLo, Ordering> > : std::true_type
+{};
+template <typename Matrix, int UpLo, typename Ordering>
+struct Detects_indefinite<Eigen::SimplicialLDLT<Matrix, UpLo, Ordering> > : std::true_type
+{};
+#ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
+template <typename Matrix, int UpLo>
+struct Detects_indefinite<Eigen::CholmodSupernodalLLT<Matrix, UpLo> > : std::true_type
+{};
+template <typename Matrix, int UpLo>
+struct Detects_indefinite<Eigen::CholmodSimplicialLLT<Matrix, UpLo> > : std::true_type
+{};
+#endif
+
+// Whether the pivots of an LDL^* factorization are all positive (for the
+// solvers without a vectorD(), the factorization's success says it).
+template <typename EigenSolver>
+auto has_positive_pivots(const EigenSolver& solver, int) -> decltype(solver.vectorD(), bool())
+{
+  return solver.vectorD().size() == 0 || solver.vectorD().real().minCoeff() > 0.;
+}
+template <typename EigenSolver>
+bool has_positive_pivots(const EigenSolver&, long)
+{
+  return true;
+}
+
+// CHOLMOD reports a matrix that is not positive definite as a warning on
+// stderr; where that is an expected outcome (a trial shift), this silences
+// its warnings (not its errors) for the scope of the object.
+template <typename EigenSolver, typename = void>
+struct Cholmod_warnings_off
+{
+  explicit Cholmod_warnings_off(EigenSolver&) {}
+};
+template <typename EigenSolver>
+struct Cholmod_warnings_off<EigenSolver, std::void_t<decltype(std::declval<EigenSolver&>().cholmod().print)> >
+{
+  EigenSolver& solver;
+  int saved;
+  explicit Cholmod_warnings_off(EigenSolver& s) : solver(s), saved(s.cholmod().print) { solver.cholmod().print = 1; }
+  ~Cholmod_warnings_off() { solver.cholmod().print = saved; }
+};
+
 template <typename EigenSolver>
 class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
                       std::enable_if_t<std::is_same<typename EigenSolver::MatrixType, Complex_sparse_matrix>::value> >
@@ -94,18 +170,39 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
   Traits& m_traits;
   bool m_analyzed = false;
 
+  void analyze(const Complex_sparse_matrix& S, bool same_pattern)
+  {
+    if(!(same_pattern && m_analyzed))
+      m_traits.solver().analyzePattern(S);
+    m_analyzed = true;
+  }
+
 public:
+  static constexpr bool detects_indefinite = Detects_indefinite<EigenSolver>::value;
+
   explicit Factored_matrix(Traits& traits) : m_traits(traits) {}
 
   void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
   {
-    EigenSolver& solver = m_traits.solver();
-    if(!(same_pattern && m_analyzed))
-      solver.analyzePattern(S);
-    m_analyzed = true;
-    solver.factorize(S);
-    if(solver.info() != Eigen::Success)
+    analyze(S, same_pattern);
+    m_traits.solver().factorize(S);
+    if(m_traits.solver().info() != Eigen::Success)
       throw Solver_failure_error("the sparse solver could not factor the matrix (not positive definite?)");
+  }
+
+  // Factors S and returns true, or returns false, without a warning, if the
+  // factorization shows that S is not positive definite (or fails otherwise);
+  // the next factorization then redoes the analysis.
+  bool factor_if_positive_definite(const Complex_sparse_matrix& S, bool same_pattern = false)
+  {
+    EigenSolver& solver = m_traits.solver();
+    analyze(S, same_pattern);
+    {
+      Cholmod_warnings_off<EigenSolver> quiet(solver);
+      solver.factorize(S);
+    }
+    m_analyzed = solver.info() == Eigen::Success && has_positive_pivots(solver, 0);
+    return m_analyzed;
   }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const

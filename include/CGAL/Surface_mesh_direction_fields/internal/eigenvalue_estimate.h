@@ -1,0 +1,210 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/hermitian_products.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <vector>
+
+// A cheap upper bound of the smallest eigenvalue lambda_1 of the pencil
+// (A, M), and a start vector close to its eigenvector, from a coarse version
+// of the problem (one level of aggregation, in the spirit of algebraic
+// multigrid). The inverse iteration uses them to shift its factorization
+// close to lambda_1, where it converges several times faster.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// Vertices grouped into aggregates (a vertex and its neighbours, plus the
+// leftovers joined to a neighbouring aggregate); a coarse coefficient x_c
+// stands for the fine coefficients x_i = phase_i x_c[aggregate_i], where the
+// unit phase_i transports the aggregate's root to i: the fine field is
+// locally parallel.
+struct Aggregates
+{
+  std::vector<Eigen::Index> of_vertex;
+  Complex_vector phase;
+  Eigen::Index count = 0;
+};
+
+inline Complex unit(const Complex& z)
+{
+  const double r = std::abs(z);
+  return r > 0. ? z / r : Complex(1., 0.);
+}
+
+// The transport comes from the phases of the mass matrix M (the coupling
+// M_ir = r |t| / 12 is positive up to the transport for every
+// non-degenerate face, whereas the cotangent weights of A can change sign):
+// x_i = unit(M_ir) x_r makes the cross term conj(x_i) M_ir x_r positive real.
+inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
+{
+  const Eigen::Index n = M.rows();
+  Aggregates g;
+  g.of_vertex.assign(static_cast<std::size_t>(n), -1);
+  g.phase = Complex_vector::Ones(n);
+  // roots: vertices whose neighbours are all free take them
+  for(Eigen::Index r = 0; r < n; ++r)
+  {
+    if(g.of_vertex[r] >= 0) continue;
+    bool free = true;
+    for(Complex_sparse_matrix::InnerIterator it(M, r); it && free; ++it)
+      free = g.of_vertex[static_cast<std::size_t>(it.row())] < 0;
+    if(!free) continue;
+    const Eigen::Index c = g.count++;
+    g.of_vertex[r] = c;
+    for(Complex_sparse_matrix::InnerIterator it(M, r); it; ++it)
+      if(it.row() != r)
+      {
+        g.of_vertex[static_cast<std::size_t>(it.row())] = c;
+        g.phase[it.row()] = unit(it.value());  // M_ir
+      }
+  }
+  // leftovers: join the aggregate of the most strongly coupled neighbour
+  std::vector<Eigen::Index> first_pass = g.of_vertex;
+  for(Eigen::Index i = 0; i < n; ++i)
+  {
+    if(first_pass[i] >= 0) continue;
+    double strongest = -1.;
+    for(Complex_sparse_matrix::InnerIterator it(M, i); it; ++it)  // M_ji
+    {
+      const Eigen::Index j = it.row();
+      if(j == i || first_pass[static_cast<std::size_t>(j)] < 0 || std::abs(it.value()) <= strongest) continue;
+      strongest = std::abs(it.value());
+      g.of_vertex[i] = first_pass[static_cast<std::size_t>(j)];
+      g.phase[i] = std::conj(unit(it.value())) * g.phase[j];  // M_ij = conj(M_ji)
+    }
+    if(g.of_vertex[i] < 0) g.of_vertex[i] = g.count++;  // cannot happen: a free vertex with free neighbours is a root
+  }
+  return g;
+}
+
+// The coarse pencil (P^* A P, P^* M P) for the prolongation P of the
+// aggregates, (P x_c)_i = phase_i x_c[aggregate_i]: a Rayleigh-Ritz (Galerkin)
+// projection, so its smallest eigenvalue bounds lambda_1 from above. Built
+// column by column straight into compressed storage (A and M have the same
+// pattern, so both coarse matrices share one), in one pass over A's entries.
+inline void restrict_to_aggregates(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                   const Aggregates& g, Complex_sparse_matrix& Ac, Complex_sparse_matrix& Mc)
+{
+  typedef Complex_sparse_matrix::StorageIndex Storage_index;
+  const Eigen::Index n = A.rows(), nc = g.count;
+  // the members of each aggregate, contiguous (counting sort)
+  std::vector<Eigen::Index> first(static_cast<std::size_t>(nc) + 1, 0), members(static_cast<std::size_t>(n));
+  for(Eigen::Index c : g.of_vertex) ++first[static_cast<std::size_t>(c) + 1];
+  for(std::size_t c = 0; c < static_cast<std::size_t>(nc); ++c) first[c + 1] += first[c];
+  std::vector<Eigen::Index> fill(first.begin(), first.end() - 1);
+  for(Eigen::Index i = 0; i < n; ++i) members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g.of_vertex[i])]++)] = i;
+
+  struct Entry
+  {
+    Storage_index row;
+    Complex a, m;
+  };
+  std::vector<Storage_index> outer(static_cast<std::size_t>(nc) + 1, 0);
+  std::vector<Entry> entries;
+  entries.reserve(static_cast<std::size_t>(A.nonZeros() / 3));
+  std::vector<std::size_t> slot(static_cast<std::size_t>(nc), std::size_t(-1));  // of a coarse row in the current column
+  const Storage_index* a_outer = A.outerIndexPtr();
+  const Storage_index* a_inner = A.innerIndexPtr();
+  const Complex* a_value = A.valuePtr();
+  const Complex* m_value = M.valuePtr();
+  for(Eigen::Index cj = 0; cj < nc; ++cj)
+  {
+    const std::size_t column_begin = entries.size();
+    for(Eigen::Index k = first[static_cast<std::size_t>(cj)]; k < first[static_cast<std::size_t>(cj) + 1]; ++k)
+    {
+      const Eigen::Index j = members[static_cast<std::size_t>(k)];
+      const Complex pj = g.phase[j];
+      for(Storage_index p = a_outer[j]; p < a_outer[j + 1]; ++p)
+      {
+        const Eigen::Index i = a_inner[p];
+        const std::size_t ci = static_cast<std::size_t>(g.of_vertex[static_cast<std::size_t>(i)]);
+        if(slot[ci] == std::size_t(-1))
+        {
+          slot[ci] = entries.size();
+          entries.push_back({static_cast<Storage_index>(ci), Complex(0., 0.), Complex(0., 0.)});
+        }
+        const Complex weight = std::conj(g.phase[i]) * pj;
+        entries[slot[ci]].a += weight * a_value[p];
+        entries[slot[ci]].m += weight * m_value[p];
+      }
+    }
+    std::sort(entries.begin() + static_cast<std::ptrdiff_t>(column_begin), entries.end(),
+              [](const Entry& x, const Entry& y) { return x.row < y.row; });
+    for(std::size_t e = column_begin; e < entries.size(); ++e) slot[static_cast<std::size_t>(entries[e].row)] = std::size_t(-1);
+    outer[static_cast<std::size_t>(cj) + 1] = static_cast<Storage_index>(entries.size());
+  }
+  for(Complex_sparse_matrix* C : {&Ac, &Mc})
+  {
+    C->resize(nc, nc);
+    C->resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
+    std::copy(outer.begin(), outer.end(), C->outerIndexPtr());
+    for(std::size_t e = 0; e < entries.size(); ++e)
+    {
+      C->innerIndexPtr()[e] = entries[e].row;
+      C->valuePtr()[e] = (C == &Ac) ? entries[e].a : entries[e].m;
+    }
+  }
+}
+
+inline Complex_vector prolongate(const Complex_vector& xc, const Aggregates& g)
+{
+  Complex_vector x(static_cast<Eigen::Index>(g.of_vertex.size()));
+  for(Eigen::Index i = 0; i < x.size(); ++i) x[i] = g.phase[i] * xc[g.of_vertex[static_cast<std::size_t>(i)]];
+  return x;
+}
+
+// Damped Jacobi sweeps on (A - theta M) x = 0, theta the current Rayleigh
+// quotient: they remove the jumps a prolongated coarse vector has across the
+// aggregates' borders (rough components, which are what makes its Rayleigh
+// quotient a poor bound); returns the Rayleigh quotient of the result, an
+// upper bound of lambda_1 (or NaN if x vanished). A and M must have the same
+// pattern.
+inline double smooth_and_bound(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, int sweeps, Complex_vector& x)
+{
+  const Eigen::VectorXd a_diagonal = A.diagonal().real(), m_diagonal = M.diagonal().real();
+  Complex_dense_matrix X(x.size(), 1), AX, MX;
+  double theta = std::numeric_limits<double>::quiet_NaN();
+  for(int sweep = 0;; ++sweep)
+  {
+    X.col(0) = x;
+    hermitian_multiply_pair(A, M, true, X, AX, MX);
+    const double norm2 = x.dot(MX.col(0)).real();
+    if(!(norm2 > 0.)) return std::numeric_limits<double>::quiet_NaN();
+    theta = x.dot(AX.col(0)).real() / norm2;
+    if(sweep == sweeps) break;
+    for(Eigen::Index i = 0; i < x.size(); ++i)
+    {
+      const double d = a_diagonal[i] - theta * m_diagonal[i];
+      if(d > 0.) x[i] -= (2. / 3.) * (AX(i, 0) - theta * MX(i, 0)) / d;
+    }
+  }
+  return theta;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H

@@ -1,0 +1,117 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <complex>
+
+// Products of the Hermitian matrices A and M (both triangles stored, in
+// compressed columns) with blocks of vectors: the products the eigen-solve
+// and its coarse estimate spend their memory traffic on.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+inline bool have_same_pattern(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M)
+{
+  return A.isCompressed() && M.isCompressed() && A.rows() == M.rows() && A.cols() == M.cols() &&
+         A.nonZeros() == M.nonZeros() &&
+         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, M.outerIndexPtr()) &&
+         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), M.innerIndexPtr());
+}
+
+// Y = H X for a Hermitian H stored with both triangles in compressed columns:
+// row i of H is the conjugate of its column i, so each entry of Y is a dot
+// product over one stored column -- contiguous reads, and rows can be
+// computed in parallel without write conflicts (Eigen's column-major product
+// scatters into rows instead).
+inline void hermitian_multiply(const Complex_sparse_matrix& H, const Complex_dense_matrix& X, Complex_dense_matrix& Y)
+{
+  Y.resize(H.rows(), X.cols());
+  const auto* outer = H.outerIndexPtr();
+  const auto* inner = H.innerIndexPtr();
+  const Complex* value = H.valuePtr();
+  const auto* non_zeros = H.innerNonZeroPtr();  // null when compressed
+  parallel_for_each_index(static_cast<std::size_t>(H.outerSize()), [&](std::size_t i) {
+    const auto begin = outer[i];
+    const auto end = non_zeros ? begin + non_zeros[i] : outer[i + 1];
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+    {
+      const Complex* x = X.col(j).data();
+      Complex sum(0., 0.);
+      for(auto p = begin; p < end; ++p) sum += std::conj(value[p]) * x[inner[p]];
+      Y(static_cast<Eigen::Index>(i), j) = sum;
+    }
+  });
+}
+
+inline Complex_dense_matrix hermitian_multiply(const Complex_sparse_matrix& H, const Complex_dense_matrix& X)
+{
+  Complex_dense_matrix Y;
+  hermitian_multiply(H, X, Y);
+  return Y;
+}
+
+// AX = A X and MX = M X for Hermitian A and M, in one pass over their
+// columns when they have the same pattern (`same_pattern`): the indices are
+// read once for both products, which matters on large meshes, where these
+// products are limited by memory traffic.
+inline void hermitian_multiply_pair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, bool same_pattern,
+                                    const Complex_dense_matrix& X, Complex_dense_matrix& AX, Complex_dense_matrix& MX)
+{
+  if(!same_pattern)
+  {
+    hermitian_multiply(A, X, AX);
+    hermitian_multiply(M, X, MX);
+    return;
+  }
+  AX.resize(A.rows(), X.cols());
+  MX.resize(M.rows(), X.cols());
+  const auto* outer = A.outerIndexPtr();
+  const auto* inner = A.innerIndexPtr();
+  const Complex* a = A.valuePtr();
+  const Complex* m = M.valuePtr();
+  parallel_for_each_index(static_cast<std::size_t>(A.outerSize()), [&](std::size_t i) {
+    const auto begin = outer[i], end = outer[i + 1];
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+    {
+      const Complex* x = X.col(j).data();
+      Complex sum_a(0., 0.), sum_m(0., 0.);
+      for(auto p = begin; p < end; ++p)
+      {
+        const Complex xp = x[inner[p]];
+        sum_a += std::conj(a[p]) * xp;
+        sum_m += std::conj(m[p]) * xp;
+      }
+      AX(static_cast<Eigen::Index>(i), j) = sum_a;
+      MX(static_cast<Eigen::Index>(i), j) = sum_m;
+    }
+  });
+}
+
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
