@@ -225,6 +225,7 @@ public:
     options.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
     options.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
     options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+    options.shift_fraction = internal::shift_fraction_for(result.smoothness_parameter);
     if(!(options.residual_tolerance >= 0.))
       throw Invalid_input_error("the residual tolerance must be non-negative");
 

@@ -44,6 +44,23 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// The fraction of the coarse bound R used as the shift, for the energy E_s.
+// R overestimates lambda_1 by an error of about the same size for every s,
+// but lambda_1 itself shrinks as |s| -> 1 (on a sphere it is n (1 - s)), so
+// R / lambda_1 grows. Measured after 4 sweeps on the shared meshes with
+// 5000 vertices or more (n = 1, 2, 4, 6): at most 1.26 for s = 0 (1.9 where
+// lambda_1 is about 0, where no shift is tried), 1.46 for |s| = 0.5, 4.3 for
+// |s| = 0.9, 15 for |s| = 1. A fraction above lambda_1 / R makes A - sigma M
+// indefinite, which costs a second factorization; 0.6 (1 - |s|) keeps a
+// margin of 1.3 or more at s = 0 and of 2 or more elsewhere (it allows
+// R / lambda_1 up to 1.67, 3.3 and 16.7 for those s; no shift at |s| = 1).
+// With it the solves on nefertiti_sub4 (400k faces, n = 4, s = 0) fall from
+// 16 to 7.
+inline double shift_fraction_for(double s)
+{
+  return 0.6 * (std::max)(0., 1. - std::abs(s));
+}
+
 struct Eigen_solve_options
 {
   // The shift epsilon is this factor times trace(A) / trace(M), a typical
@@ -72,13 +89,11 @@ struct Eigen_solve_options
   // bounds lambda_1 from above, and A - shift_fraction R M is factored
   // instead of A + epsilon M when the solver can tell whether that matrix is
   // positive definite (otherwise, or if it is not, A + epsilon M is).
-  // After 4 sweeps R / lambda_1 lay between 1.00 and 1.45 on the shared
-  // meshes (n = 4, s = 0 and s = 0.5), hence the fraction 0.6; with it the
-  // solves on nefertiti_sub4 (400k faces) fell from 16 to 7.
+  // The fraction depends on the energy's s: see shift_fraction_for().
   Eigen::Index coarse_threshold = 5000;
   double coarse_tolerance = 1e-4;
   int smoothing_sweeps = 4;
-  double shift_fraction = 0.6;
+  double shift_fraction = shift_fraction_for(0.);
 };
 
 struct Eigen_solve_result
