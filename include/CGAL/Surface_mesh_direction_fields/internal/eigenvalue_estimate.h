@@ -25,11 +25,12 @@
 #include <limits>
 #include <vector>
 
-// A cheap upper bound of the smallest eigenvalue lambda_1 of the pencil
-// (A, M), and a start vector close to its eigenvector, from a coarse version
-// of the problem (one level of aggregation, in the spirit of algebraic
-// multigrid). The inverse iteration uses them to shift its factorization
-// close to lambda_1, where it converges several times faster.
+// The pieces of one level of a cheap estimate of the smallest eigenpair of
+// the pencil (A, M), in the spirit of algebraic multigrid: aggregation, the
+// coarse pencil, prolongation and smoothing. The eigen-solve
+// (inverse_iteration.h) chains levels of them into a start vector and an
+// upper bound of lambda_1, with which it shifts its factorization close to
+// lambda_1, where inverse iteration converges several times faster.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
