@@ -15,11 +15,13 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -164,70 +166,87 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
     return 3 * static_cast<std::size_t>(get(fim, f)) + static_cast<std::size_t>(c);
   };
 
+  // Each vertex's fan takes as many corners as the vertex has incident
+  // faces (more or fewer means a non-manifold vertex): the offsets are known
+  // before the walks, so the fans are walked in parallel, each vertex writing
+  // only its own range of fan_corners and the twins of its own corners.
   m.fan_offsets.assign(nv + 1, 0);
+  for(std::size_t i = 0; i < nv; ++i) m.fan_offsets[i + 1] = m.fan_offsets[i] + incident_faces[i];
+  m.fan_corners.assign(m.fan_offsets[nv], no_index);
   m.is_border_vertex.assign(nv, 0);
-  m.fan_corners.reserve(3 * nf);
   // Vertices in index order, so that fans are laid out by index.
   std::vector<typename GT::vertex_descriptor> vertex_of_index(nv);
   for(auto v : vertices(tm))
     vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
 
-  std::vector<std::size_t> clockwise;  // the corners of an open fan before the start, clockwise
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    m.fan_offsets[i] = m.fan_corners.size();
-    const auto v = vertex_of_index[i];
-    const halfedge_descriptor hv = halfedge(v, tm);
-    if(hv == GT::null_halfedge() || incident_faces[i] == 0)
-      continue;  // isolated vertex: empty fan
-
-    // Walk counter-clockwise through the corners of v from one outgoing
-    // halfedge (the next outgoing halfedge is opposite(prev(h))). Reaching a
-    // border halfedge means the fan is open: its beginning is then found by
-    // walking clockwise from the start (next(opposite(h))), so every halfedge
-    // of the fan is visited once.
-    const halfedge_descriptor start = opposite(hv, tm);
-    const std::size_t bound = incident_faces[i] + 1;  // guards the walks on broken meshes
-    halfedge_descriptor h = start;
-    bool open = false;
-    do
+  std::vector<unsigned char> non_manifold(nv, 0);
+  parallel_for_each_range(nv, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::size_t> fan, clockwise;  // the corners of an open fan before the start, clockwise
+    for(std::size_t i = begin; i < end; ++i)
     {
-      if(is_border(h, tm)) { open = true; break; }
-      m.fan_corners.push_back(corner_of(h));
-      h = opposite(prev(h, tm), tm);
-    }
-    while(h != start && m.fan_corners.size() - m.fan_offsets[i] <= bound);
-    if(open)
-    {
-      m.is_border_vertex[i] = 1;
-      clockwise.clear();
-      for(halfedge_descriptor g = start; !is_border(opposite(g, tm), tm) && clockwise.size() <= bound;)
+      if(incident_faces[i] == 0)
+        continue;  // isolated vertex: empty fan
+      const halfedge_descriptor hv = halfedge(vertex_of_index[i], tm);
+      if(hv == GT::null_halfedge())
       {
-        g = next(opposite(g, tm), tm);
-        if(g == start) break;
-        clockwise.push_back(corner_of(g));
+        non_manifold[i] = 1;
+        continue;
       }
-      m.fan_corners.insert(m.fan_corners.begin() + static_cast<std::ptrdiff_t>(m.fan_offsets[i]), clockwise.rbegin(),
-                           clockwise.rend());
-    }
 
-    if(m.fan_corners.size() - m.fan_offsets[i] != incident_faces[i])
-      throw Invalid_input_error("vertex " + std::to_string(i) +
-                                " is non-manifold (its incident faces do not form a single fan)");
+      // Walk counter-clockwise through the corners of v from one outgoing
+      // halfedge (the next outgoing halfedge is opposite(prev(h))). Reaching a
+      // border halfedge means the fan is open: its beginning is then found by
+      // walking clockwise from the start (next(opposite(h))), so every halfedge
+      // of the fan is visited once.
+      const halfedge_descriptor start = opposite(hv, tm);
+      const std::size_t bound = incident_faces[i] + 1;  // guards the walks on broken meshes
+      halfedge_descriptor h = start;
+      bool open = false;
+      fan.clear();
+      do
+      {
+        if(is_border(h, tm)) { open = true; break; }
+        fan.push_back(corner_of(h));
+        h = opposite(prev(h, tm), tm);
+      }
+      while(h != start && fan.size() <= bound);
+      if(open)
+      {
+        m.is_border_vertex[i] = 1;
+        clockwise.clear();
+        for(halfedge_descriptor g = start; !is_border(opposite(g, tm), tm) && clockwise.size() <= bound;)
+        {
+          g = next(opposite(g, tm), tm);
+          if(g == start) break;
+          clockwise.push_back(corner_of(g));
+        }
+        fan.insert(fan.begin(), clockwise.rbegin(), clockwise.rend());
+      }
+      if(fan.size() != incident_faces[i])
+      {
+        non_manifold[i] = 1;  // its incident faces do not form a single fan
+        continue;
+      }
+      std::copy(fan.begin(), fan.end(), m.fan_corners.begin() + static_cast<std::ptrdiff_t>(m.fan_offsets[i]));
 
-    // Twins from the fan: corner k at v has third vertex b, and the next corner
-    // k2 counter-clockwise has first side v -> b, the reverse of the first side
-    // b -> v of previous_corner(k). Every inner edge is met this way.
-    const std::size_t first = m.fan_offsets[i], count = m.fan_corners.size() - first;
-    for(std::size_t a = 0; a < count; ++a)
-    {
-      if(open && a + 1 == count) break;  // no corner after the last one of an open fan
-      const std::size_t k = m.fan_corners[first + a], k2 = m.fan_corners[first + (a + 1) % count];
-      m.twin_corner[Indexed_mesh::previous_corner(k)] = k2;
-      m.twin_corner[k2] = Indexed_mesh::previous_corner(k);
+      // Twins from the fan: corner k at v has third vertex b, and the next
+      // corner k2 counter-clockwise has first side v -> b, the reverse of the
+      // first side b -> v of previous_corner(k). Each vertex writes the twins
+      // of its own corners k2 (the other direction is written by b); the
+      // first corner of an open fan has a border side and no twin.
+      const std::size_t count = fan.size();
+      for(std::size_t a = 0; a < count; ++a)
+      {
+        if(open && a + 1 == count) break;  // no corner after the last one of an open fan
+        const std::size_t k = fan[a], k2 = fan[(a + 1) % count];
+        m.twin_corner[k2] = Indexed_mesh::previous_corner(k);
+      }
     }
-  }
-  m.fan_offsets[nv] = m.fan_corners.size();
+  });
+  const auto bad = std::find(non_manifold.begin(), non_manifold.end(), 1);
+  if(bad != non_manifold.end())
+    throw Invalid_input_error("vertex " + std::to_string(bad - non_manifold.begin()) +
+                              " is non-manifold (its incident faces do not form a single fan)");
 
   label_connected_components(m);
   return m;
