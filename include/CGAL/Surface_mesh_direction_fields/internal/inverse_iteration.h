@@ -362,17 +362,8 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   Complex_vector u = next.col(0);
   while(result.iterations < options.max_iterations)
   {
-#ifdef SMDF_DEBUG_RR
-    const auto ts0 = Clock::now();
-#endif
     const Complex_dense_matrix W = factored.solve(MX);
     ++result.iterations;
-#ifdef SMDF_DEBUG_RR
-    std::cerr << "solve " << std::chrono::duration<double, std::milli>(Clock::now() - ts0).count() << " ms\n";
-#endif
-#ifdef SMDF_DEBUG_RR
-    const auto ta0 = Clock::now();
-#endif
     if(k + W.cols() > basis_size)
     {
       // Restart with the best Ritz vectors and the previous best ones.
@@ -390,10 +381,6 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
       next_seed += static_cast<unsigned int>(block);
     }
 
-#ifdef SMDF_DEBUG_RR
-    const auto tr0 = Clock::now();
-    std::cerr << "add " << std::chrono::duration<double, std::milli>(tr0 - ta0).count() << " ms\n";
-#endif
     // Rayleigh-Ritz: the best vectors of span(V), M-orthonormal.
     Eigen::GeneralizedSelfAdjointEigenSolver<Complex_dense_matrix> ritz(H, G);
     if(ritz.info() != Eigen::Success)
@@ -419,9 +406,6 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
     const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
     result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
     result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (sigma * MX.col(0).norm());
-#ifdef SMDF_DEBUG_RR
-    std::cerr << "rr " << std::chrono::duration<double, std::milli>(Clock::now() - tr0).count() << " ms\n";
-#endif
     if(result.residual <= options.residual_tolerance)
     {
       result.converged = true;
