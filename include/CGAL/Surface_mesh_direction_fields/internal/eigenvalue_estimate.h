@@ -161,11 +161,12 @@ inline void restrict_to_aggregates(const Complex_sparse_matrix& A, const Complex
     C->resize(nc, nc);
     C->resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
     std::copy(outer.begin(), outer.end(), C->outerIndexPtr());
-    for(std::size_t e = 0; e < entries.size(); ++e)
-    {
-      C->innerIndexPtr()[e] = entries[e].row;
-      C->valuePtr()[e] = (C == &Ac) ? entries[e].a : entries[e].m;
-    }
+    for(std::size_t e = 0; e < entries.size(); ++e) C->innerIndexPtr()[e] = entries[e].row;
+  }
+  for(std::size_t e = 0; e < entries.size(); ++e)
+  {
+    Ac.valuePtr()[e] = entries[e].a;
+    Mc.valuePtr()[e] = entries[e].m;
   }
 }
 

@@ -87,9 +87,9 @@ struct Eigen_solve_options
   // than `coarse_threshold` vertices, solved to `coarse_tolerance`), each
   // prolongated and smoothed by `smoothing_sweeps` Jacobi sweeps. The
   // Rayleigh quotient R of the finest one bounds lambda_1 from above, and
-  // A - shift_fraction R M is factored
-  // instead of A + epsilon M when the solver can tell whether that matrix is
-  // positive definite (otherwise, or if it is not, A + epsilon M is).
+  // A - shift_fraction R M is factored instead of A + epsilon M when the
+  // solver can tell whether that matrix is positive definite (otherwise, or
+  // if it is not, A + epsilon M is).
   // The fraction depends on the energy's s: see shift_fraction_for().
   Eigen::Index coarse_threshold = 5000;
   double coarse_tolerance = 1e-4;
