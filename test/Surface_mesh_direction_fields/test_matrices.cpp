@@ -186,7 +186,7 @@ static void check_local_matrices_by_quadrature(Test_report& report)
         const Complex rij = std::polar(1., 0.7), rjk = std::polar(1., -1.9);
         con.transport = {rij, rjk, std::exp(I * omega) / (rij * rjk)};
         con.holonomy = {omega};
-        const SI::Local_matrices lm = SI::local_matrices(ts, con, 0, s);
+        const SI::Local_matrices lm = SI::local_matrices(m, ts, con, 0, s);
         Eigen::Matrix3cd A_closed = Eigen::Matrix3cd::Zero(), M_closed = Eigen::Matrix3cd::Zero();
         for(int c = 0; c < 3; ++c)
         {
@@ -296,7 +296,7 @@ static void check_assembly_against_scatter(Test_report& report, const std::strin
   std::vector<Eigen::Triplet<SI::Complex> > energy, mass;
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
   {
-    const SI::Local_matrices lm = SI::local_matrices(ts, con, f, s);
+    const SI::Local_matrices lm = SI::local_matrices(m, ts, con, f, s);
     for(int c = 0; c < 3; ++c)
     {
       const auto i = static_cast<Eigen::Index>(comps.local_index[m.faces[f][c]]);

@@ -124,9 +124,11 @@ struct Local_matrices
 };
 
 // The local matrices of face f for the energy E_s (s in [-1, 1]).
-inline Local_matrices local_matrices(const Tangent_spaces& ts, const Connection& con, std::size_t f, double s)
+inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts, const Connection& con,
+                                     std::size_t f, double s)
 {
   Local_matrices lm;
+  const Face_geometry geometry = face_geometry(m, f, ts.mollification);
   const double area = ts.face_area[f];
   const double omega = con.holonomy[f];
   // conjugated kernels: see the note on placement and conjugation above
@@ -138,10 +140,10 @@ inline Local_matrices local_matrices(const Tangent_spaces& ts, const Connection&
   {
     // Intrinsic: the sides from i = t[c] to j = t[c+1] and k = t[c+2], and the
     // opposite side j -> k, from the (possibly mollified) edge lengths.
-    const double l_ij = ts.side_length[3 * f + c];
-    const double l_jk = ts.side_length[3 * f + (c + 1) % 3];
-    const double l_ki = ts.side_length[3 * f + (c + 2) % 3];
-    const double g11 = l_ij * l_ij, g22 = l_ki * l_ki, g12 = ts.corner_dot[3 * f + c];
+    const double l_ij = geometry.side_length[c];
+    const double l_jk = geometry.side_length[(c + 1) % 3];
+    const double l_ki = geometry.side_length[(c + 2) % 3];
+    const double g11 = l_ij * l_ij, g22 = l_ki * l_ki, g12 = geometry.corner_dot[c];
     const Complex r_jk = con.transport[3 * f + (c + 1) % 3];  // j -> k runs counter-clockwise
 
     const Complex dirichlet = (r_jk / area) * ((g11 + g22) * f1 + g12 * f2);
@@ -189,10 +191,10 @@ public:
 
 // The local matrices of every face (indexed by face); the faces are
 // independent, so this runs in parallel when TBB is available.
-inline void compute_all_local_matrices(const Tangent_spaces& ts, const Connection& con, double s,
-                                       Local_matrix_array& local)
+inline void compute_all_local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts, const Connection& con,
+                                       double s, Local_matrix_array& local)
 {
-  parallel_for_each_index(ts.face_area.size(), [&](std::size_t f) { local.construct(f, local_matrices(ts, con, f, s)); });
+  parallel_for_each_index(ts.face_area.size(), [&](std::size_t f) { local.construct(f, local_matrices(m, ts, con, f, s)); });
 }
 
 struct Column_entry
@@ -208,6 +210,11 @@ struct Column_entry
 // t[c+1], so (row t[c+1], column v) holds that pair's value; and v is the
 // vertex k of pair (c+1)%3, whose j is t[c+2], so (row t[c+2], column v)
 // holds the conjugate of that pair's value (see Local_matrices).
+// The fan is counter-clockwise, so the vertex t[c+2] of one corner is the
+// vertex t[c+1] of the next (and, in a closed fan, the last corner's is the
+// first corner's): their two contributions are added as they come, which
+// leaves one entry per neighbour to sort instead of two. Rows that still
+// repeat (a multiple edge) are merged after the sort.
 inline void gather_column(const Indexed_mesh& m, const Local_matrix_array& local,
                           const std::vector<std::size_t>& local_index, std::size_t v,
                           std::vector<Column_entry>& column)
@@ -221,14 +228,26 @@ inline void gather_column(const Indexed_mesh& m, const Local_matrix_array& local
     const Local_matrices& lm = local[f];
     energy_diagonal += lm.energy_diagonal[c];
     mass_diagonal += lm.mass_diagonal[c];
-    column.push_back({static_cast<Eigen::Index>(local_index[m.faces[f][after]]), lm.energy_pair[before],
-                      lm.mass_pair[before]});
+    const auto row_after = static_cast<Eigen::Index>(local_index[m.faces[f][after]]);
+    if(!column.empty() && column.back().row == row_after)
+    {
+      column.back().energy += lm.energy_pair[before];
+      column.back().mass += lm.mass_pair[before];
+    }
+    else
+      column.push_back({row_after, lm.energy_pair[before], lm.mass_pair[before]});
     column.push_back({static_cast<Eigen::Index>(local_index[m.faces[f][before]]), std::conj(lm.energy_pair[after]),
                       std::conj(lm.mass_pair[after])});
   }
+  if(column.size() > 2 && column.back().row == column.front().row)  // a closed fan
+  {
+    column.front().energy += column.back().energy;
+    column.front().mass += column.back().mass;
+    column.pop_back();
+  }
   column.push_back({static_cast<Eigen::Index>(local_index[v]), Complex(energy_diagonal, 0.),
                     Complex(mass_diagonal, 0.)});
-  // insertion sort (a column has about 13 raw entries), then merge equal rows
+  // insertion sort (a column has about 7 entries), then merge equal rows
   for(std::size_t a = 1; a < column.size(); ++a)
     for(std::size_t b = a; b > 0 && column[b].row < column[b - 1].row; --b)
       std::swap(column[b], column[b - 1]);
@@ -339,7 +358,7 @@ inline std::vector<Energy_and_mass> assemble_energy_and_mass(const Indexed_mesh&
                                                              double s)
 {
   Local_matrix_array local(ts.face_area.size());
-  compute_all_local_matrices(ts, con, s, local);
+  compute_all_local_matrices(m, ts, con, s, local);
   std::vector<Energy_and_mass> matrices;
   matrices.reserve(comps.list.size());
   for(const Component& comp : comps.list)
@@ -353,7 +372,7 @@ inline Energy_and_mass assemble_energy_and_mass(const Indexed_mesh& m, const Tan
                                                 const std::vector<std::size_t>& local_index, double s)
 {
   Local_matrix_array local(m.number_of_faces());
-  for(std::size_t f : comp.faces) local.construct(f, local_matrices(ts, con, f, s));
+  for(std::size_t f : comp.faces) local.construct(f, local_matrices(m, ts, con, f, s));
   return assemble_component(m, local, comp, local_index);
 }
 

@@ -60,7 +60,8 @@ inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexe
   {
     const double beta = dihedral_angle(m, corner);
     if(beta == 0.) continue;
-    q[m.vertex_of_corner(corner)] += -0.25 * beta * ts.side_length[corner] * std::polar(1., 2. * ts.corner_theta[corner]);
+    const double length = face_geometry(m, corner / 3, ts.mollification).side_length[corner % 3];
+    q[m.vertex_of_corner(corner)] += -0.25 * beta * length * std::polar(1., 2. * ts.corner_theta[corner]);
   }
   return q;
 }

@@ -14,7 +14,9 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -55,6 +57,29 @@ void parallel_for_each_index(std::size_t n, const IndexBody& body)
   parallel_for_each_range(n, [&body](std::size_t begin, std::size_t end) {
     for(std::size_t i = begin; i < end; ++i) body(i);
   });
+}
+
+// A reduction over [0, n) whose result does not depend on the number of
+// threads: `chunk_value(begin, end)` reduces fixed chunks of
+// `parallel_grain_size` indices (in parallel), then `combine` folds the
+// chunks' values in their order. For sums of doubles, this makes the rounding
+// the same on every machine and thread count.
+template <typename T, typename ChunkValue, typename Combine>
+T parallel_reduce_in_order(std::size_t n, T initial, const ChunkValue& chunk_value, const Combine& combine)
+{
+  const std::size_t chunks = (n + parallel_grain_size - 1) / parallel_grain_size;
+  std::vector<T> values(chunks, initial);
+  auto reduce_chunk = [&](std::size_t k) {
+    values[k] = chunk_value(k * parallel_grain_size, (std::min)(n, (k + 1) * parallel_grain_size));
+  };
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
+  tbb::parallel_for(std::size_t(0), chunks, reduce_chunk);
+#else
+  for(std::size_t k = 0; k < chunks; ++k) reduce_chunk(k);
+#endif
+  T result = initial;
+  for(const T& value : values) result = combine(result, value);
+  return result;
 }
 
 } // namespace internal

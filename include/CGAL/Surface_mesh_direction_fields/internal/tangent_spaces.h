@@ -41,12 +41,66 @@ struct Tangent_spaces
   std::vector<double> angle_scale;        // s_i = 2 pi / (angle sum) inside, 1 on the boundary
   std::vector<double> corner_angle;       // Euclidean angle alpha of corner 3f+c
   std::vector<double> corner_theta;       // theta_i(i -> j) of the corner's first side, i = faces[f][c], j = faces[f][c+1]
-  std::vector<double> side_length;        // length of the corner's first side, faces[f][c] -> faces[f][c+1]
-  std::vector<double> corner_dot;         // <p_ij, p_ik>: scalar product of the corner's two sides
   std::vector<double> face_area;          // |t|
   std::vector<double> face_angle_defect;  // kappa_t = sum of the rescaled corner angles - pi
   double mollification = 0.;              // the length added to every edge (0: none was needed)
 };
+
+// The side lengths and the scalar products of the corners of one face,
+// computed when needed rather than stored (96 bytes per vertex, about a
+// tenth of the memory of the whole computation besides the factor; the
+// assembly recomputes them for the cost of a few square roots per face).
+struct Face_geometry
+{
+  double side_length[3];  // side c: faces[f][c] -> faces[f][c+1]
+  double corner_dot[3];   // <p_ij, p_ik>: scalar product of corner c's two sides
+};
+
+inline double embedded_side_length(const Indexed_mesh& m, std::size_t f, int c)
+{
+  return norm(m.points[m.faces[f][(c + 1) % 3]] - m.points[m.faces[f][c]]);
+}
+
+// Areas and scalar products: from the 3D vectors when the lengths are the
+// embedded ones (accurate for slivers), from the lengths when they were
+// mollified (`mollification` added to each). The area is Heron's formula in
+// Kahan's stable form then.
+inline Face_geometry face_geometry(const Indexed_mesh& m, std::size_t f, double mollification, double* area = nullptr)
+{
+  Face_geometry g;
+  const auto& t = m.faces[f];
+  for(int c = 0; c < 3; ++c)
+  {
+    g.side_length[c] = embedded_side_length(m, f, c);
+    if(mollification > 0.) g.side_length[c] += mollification;
+  }
+  const double* l = g.side_length;
+  if(mollification == 0.)
+  {
+    for(int c = 0; c < 3; ++c)
+      g.corner_dot[c] = dot(m.points[t[(c + 1) % 3]] - m.points[t[c]], m.points[t[(c + 2) % 3]] - m.points[t[c]]);
+    if(area) *area = 0.5 * norm(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+  }
+  else
+  {
+    for(int c = 0; c < 3; ++c)
+    {
+      // corner c lies between its first side l[c] and the side l[c+2]; l[c+1] is opposite
+      const double a = l[c], b = l[(c + 2) % 3], o = l[(c + 1) % 3];
+      g.corner_dot[c] = 0.5 * (a * a + b * b - o * o);
+    }
+    if(area)
+    {
+      double x = l[0], y = l[1], z = l[2];  // sorted x >= y >= z
+      if(x < y) std::swap(x, y);
+      if(y < z) std::swap(y, z);
+      if(x < y) std::swap(x, y);
+      const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+      *area = 0.25 * std::sqrt((std::max)(0., product));
+    }
+  }
+  return g;
+}
 
 // The geometry is intrinsic: everything downstream of the mesh indexing uses
 // edge lengths only (angles by the law of cosines, areas by Heron's formula).
@@ -66,71 +120,46 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
                                             double relative_delta = 0.)
 {
   const std::size_t nf = m.number_of_faces();
-  ts.side_length.resize(3 * nf);
   ts.corner_angle.resize(3 * nf);
   ts.face_area.resize(nf);
-  double total_length = 0.;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(int c = 0; c < 3; ++c)
-    {
-      ts.side_length[3 * f + c] = norm(m.points[m.faces[f][(c + 1) % 3]] - m.points[m.faces[f][c]]);
-      total_length += ts.side_length[3 * f + c];
-    }
 
   ts.mollification = 0.;
   if(relative_delta > 0. && nf > 0)
   {
+    const double total_length = parallel_reduce_in_order(
+      nf, 0.,
+      [&](std::size_t begin, std::size_t end) {
+        double sum = 0.;
+        for(std::size_t f = begin; f < end; ++f)
+          for(int c = 0; c < 3; ++c) sum += embedded_side_length(m, f, c);
+        return sum;
+      },
+      [](double a, double b) { return a + b; });
     const double delta = relative_delta * total_length / (3. * nf);
-    double epsilon = 0.;
-    for(std::size_t f = 0; f < nf; ++f)
-      for(int c = 0; c < 3; ++c)
-      {
-        const double a = ts.side_length[3 * f + c], b = ts.side_length[3 * f + (c + 1) % 3],
-                     o = ts.side_length[3 * f + (c + 2) % 3];
-        epsilon = (std::max)(epsilon, delta - (a + b - o));
-      }
-    if(epsilon > 0.)
-    {
-      ts.mollification = epsilon;
-      for(double& l : ts.side_length) l += epsilon;
-    }
+    ts.mollification = parallel_reduce_in_order(
+      nf, 0.,
+      [&](std::size_t begin, std::size_t end) {
+        double largest = 0.;
+        for(std::size_t f = begin; f < end; ++f)
+        {
+          const double l[3] = {embedded_side_length(m, f, 0), embedded_side_length(m, f, 1),
+                               embedded_side_length(m, f, 2)};
+          for(int c = 0; c < 3; ++c) largest = (std::max)(largest, delta - (l[c] + l[(c + 1) % 3] - l[(c + 2) % 3]));
+        }
+        return largest;
+      },
+      [](double a, double b) { return (std::max)(a, b); });
   }
 
-  // Areas and scalar products: from the 3D vectors when the lengths are the
-  // embedded ones (accurate for slivers), from the lengths when they were
-  // mollified (Heron's formula in Kahan's stable form).
-  ts.corner_dot.resize(3 * nf);
   std::vector<unsigned char> degenerate(nf, 0);
   parallel_for_each_index(nf, [&](std::size_t f) {
-    const double* l = &ts.side_length[3 * f];
-    double area;
-    if(ts.mollification == 0.)
-    {
-      const auto& t = m.faces[f];
-      area = 0.5 * norm(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
-      for(int c = 0; c < 3; ++c)
-        ts.corner_dot[3 * f + c] = dot(m.points[t[(c + 1) % 3]] - m.points[t[c]], m.points[t[(c + 2) % 3]] - m.points[t[c]]);
-    }
-    else
-    {
-      double x = l[0], y = l[1], z = l[2];  // sorted x >= y >= z
-      if(x < y) std::swap(x, y);
-      if(y < z) std::swap(y, z);
-      if(x < y) std::swap(x, y);
-      const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
-      area = 0.25 * std::sqrt((std::max)(0., product));
-      for(int c = 0; c < 3; ++c)
-      {
-        // corner c lies between its first side l[c] and the side l[c+2]; l[c+1] is opposite
-        const double a = l[c], b = l[(c + 2) % 3], o = l[(c + 1) % 3];
-        ts.corner_dot[3 * f + c] = 0.5 * (a * a + b * b - o * o);
-      }
-    }
+    double area = 0.;
+    const Face_geometry g = face_geometry(m, f, ts.mollification, &area);
     ts.face_area[f] = area;
-    const double longest = (std::max)({l[0], l[1], l[2]});
+    const double longest = (std::max)({g.side_length[0], g.side_length[1], g.side_length[2]});
     degenerate[f] = !(area > 1e-14 * longest * longest) || !std::isfinite(area);
     for(int c = 0; c < 3; ++c)
-      ts.corner_angle[3 * f + c] = std::atan2(2. * area, ts.corner_dot[3 * f + c]);
+      ts.corner_angle[3 * f + c] = std::atan2(2. * area, g.corner_dot[c]);
   });
   for(std::size_t f = 0; f < nf; ++f)  // the first degenerate face, whatever the thread count
     if(degenerate[f])
@@ -168,13 +197,12 @@ inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relat
   });
 
   ts.face_angle_defect.resize(m.number_of_faces());
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-  {
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) {
     double sum = 0.;
     for(int c = 0; c < 3; ++c)
       sum += ts.angle_scale[m.faces[f][c]] * ts.corner_angle[3 * f + c];
     ts.face_angle_defect[f] = sum - CGAL_PI;
-  }
+  });
   return ts;
 }
 
@@ -189,6 +217,9 @@ struct Connection
 // rho_ij = n (theta_j(j -> i) - theta_i(i -> j) + pi). Inside face (i, j, k),
 // the halfedge j -> i is the second side of j's corner, so
 // theta_j(j -> i) = theta_j(j -> k) + s_j alpha_j.
+// rho_ji = -rho_ij (mod 2 pi), so an interior edge's transport is computed
+// once, on the side of the smaller corner, and the other side gets its
+// conjugate: half the sines and cosines, and r_ji = conj(r_ij) exactly.
 inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces& ts, int degree)
 {
   Connection con;
@@ -197,10 +228,15 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
   con.transport.resize(3 * nf);
   con.holonomy.resize(nf);
   const double n = static_cast<double>(degree);
+  auto is_computed_side = [&m](std::size_t ci) {
+    const std::size_t twin = m.twin_corner[ci];
+    return twin == no_index || ci < twin || m.twin_corner[twin] != ci;
+  };
   parallel_for_each_index(nf, [&](std::size_t f) {
     for(int c = 0; c < 3; ++c)
     {
       const std::size_t ci = 3 * f + c, cj = 3 * f + (c + 1) % 3;
+      if(!is_computed_side(ci)) continue;
       const std::size_t j = m.faces[f][(c + 1) % 3];
       const double theta_ij = ts.corner_theta[ci];
       const double theta_ji = ts.corner_theta[cj] + ts.angle_scale[j] * ts.corner_angle[cj];
@@ -209,6 +245,9 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
       con.transport[ci] = std::polar(1., std::remainder(n * angle, 2. * CGAL_PI));
     }
     con.holonomy[f] = n * ts.face_angle_defect[f];
+  });
+  parallel_for_each_index(3 * nf, [&](std::size_t ci) {
+    if(!is_computed_side(ci)) con.transport[ci] = std::conj(con.transport[m.twin_corner[ci]]);
   });
   return con;
 }
