@@ -9,7 +9,9 @@
 //  * the coarse estimate of the eigen-solve: the coarse matrices are P^* A P
 //    and P^* M P, the bound is >= lambda_1, and the shifted factorization (or
 //    its fallback, when the shift is too large) gives the eigenpair of the
-//    unshifted solve.
+//    unshifted solve;
+//  * the matrices handed to the solver: A + shift M, or its lower triangle for
+//    the Cholesky solvers, equal to Eigen's sum bit for bit.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -22,6 +24,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 
 #include <cmath>
 #include <complex>
@@ -341,6 +344,36 @@ static void check_index_sum_with_zero_coefficients(Test_report& report, const Me
   }
 }
 
+// The matrices handed to the solver: A + shift M with both triangles, and its
+// lower triangle alone for the Cholesky solvers, which read nothing else; the
+// same values, bit for bit, as Eigen's own sum (also when the patterns differ).
+static void check_shifted_matrices(Test_report& report, const std::string& name, const SI::Complex_sparse_matrix& A,
+                                   const SI::Complex_sparse_matrix& M)
+{
+  const double shift = -0.37 * A.diagonal().real().sum() / M.diagonal().real().sum();
+  auto same = [](const SI::Complex_sparse_matrix& X, const SI::Complex_sparse_matrix& Y) {
+    if(X.rows() != Y.rows() || X.cols() != Y.cols() || X.nonZeros() != Y.nonZeros()) return false;
+    for(Eigen::Index j = 0; j < X.outerSize(); ++j)
+    {
+      SI::Complex_sparse_matrix::InnerIterator x(X, j), y(Y, j);
+      for(; x && y; ++x, ++y)
+        if(x.row() != y.row() || x.value() != y.value()) return false;
+      if(x || y) return false;
+    }
+    return true;
+  };
+  const SI::Complex_sparse_matrix sum = A + shift * M;
+  const SI::Complex_sparse_matrix lower = sum.triangularView<Eigen::Lower>();
+  report.check(same(SI::shifted_matrix(A, M, shift), sum) && same(SI::shifted_lower_triangle(A, M, shift), lower),
+               name + ": A + shift M and its lower triangle, as Eigen computes them");
+  // a mass matrix with another pattern (its diagonal): Eigen's general sum
+  const SI::Complex_sparse_matrix D = SI::Complex_sparse_matrix(M.diagonal().asDiagonal());
+  const SI::Complex_sparse_matrix sum_d = A + shift * D;
+  report.check(!SI::have_same_pattern(A, D) && same(SI::shifted_matrix(A, D, shift), sum_d) &&
+                 same(SI::shifted_lower_triangle(A, D, shift), SI::Complex_sparse_matrix(sum_d.triangularView<Eigen::Lower>())),
+               name + ": the same with a mass matrix of another pattern");
+}
+
 // The coarse estimate and the shifted factorization of the eigen-solve, with
 // the solver type `Solver`, on a mesh with a simple lambda_1.
 template <typename Solver>
@@ -356,6 +389,7 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
   const SI::Complex_sparse_matrix& A = em.energy;
   const SI::Complex_sparse_matrix& M = em.mass;
   const Eigen::Index nv = A.rows();
+  check_shifted_matrices(report, name, A, M);
 
   // aggregates: a partition with unit phases, at most half as many as vertices
   const SI::Aggregates g = SI::aggregate_vertices(M);
@@ -426,6 +460,10 @@ int main()
     make_lumpy_sphere(lumpy, 5);
     typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<SI::Complex_sparse_matrix> > Ldlt;
     report.check(SI::Factored_matrix<Ldlt>::detects_indefinite, "Eigen's LDLT detects indefinite matrices");
+    report.check(SI::Reads_lower_triangle<Eigen::SimplicialLDLT<SI::Complex_sparse_matrix> >::value &&
+                   !SI::Reads_lower_triangle<Eigen::SimplicialLDLT<SI::Complex_sparse_matrix, Eigen::Upper> >::value &&
+                   !SI::Reads_lower_triangle<Eigen::SparseLU<SI::Complex_sparse_matrix> >::value,
+                 "only the solvers reading the lower triangle are given the lower triangle");
     check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 4, 0.);
     check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 1, 0.5);
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD

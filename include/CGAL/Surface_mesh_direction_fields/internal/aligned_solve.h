@@ -59,7 +59,7 @@ Complex_vector solve_aligned_system(const Complex_sparse_matrix& A, const Comple
   const Eigen::Index n = A.rows();
   if(constraints.empty())
   {
-    factored.factor(Complex_sparse_matrix(A - lambda * M), same_pattern);
+    factored.factor_shifted(A, M, -lambda, same_pattern);
     return factored.solve(Mq);
   }
 

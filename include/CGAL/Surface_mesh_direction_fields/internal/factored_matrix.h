@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/shifted_matrix.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -30,8 +31,8 @@
 #include <utility>
 
 // The one place where the package talks to the sparse solver: factor a
-// Hermitian positive definite matrix once, then solve for blocks of
-// right-hand sides.
+// Hermitian positive definite matrix (given, or as A + shift M) once, then
+// solve for blocks of right-hand sides.
 //
 // Any model of CGAL's `SparseLinearAlgebraWithFactorTraits_d` works through
 // the generic version (the matrix is copied into the solver's matrix type and
@@ -95,6 +96,19 @@ public:
     return true;
   }
 
+  // Factors A + shift M.
+  void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
+                      bool same_pattern = false)
+  {
+    factor(shifted_matrix(A, M, shift), same_pattern);
+  }
+
+  bool factor_shifted_if_positive_definite(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                           double shift, bool same_pattern = false)
+  {
+    return factor_if_positive_definite(shifted_matrix(A, M, shift), same_pattern);
+  }
+
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
     Complex_dense_matrix X(B.rows(), B.cols());
@@ -129,6 +143,33 @@ struct Detects_indefinite<Eigen::CholmodSupernodalLLT<Matrix, UpLo> > : std::tru
 {};
 template <typename Matrix, int UpLo>
 struct Detects_indefinite<Eigen::CholmodSimplicialLLT<Matrix, UpLo> > : std::true_type
+{};
+#endif
+
+// The Eigen solvers that read only the lower triangle of the matrix they
+// factor (the Cholesky ones, with their default `Lower`): they are given only
+// that triangle of A + shift M.
+template <typename EigenSolver>
+struct Reads_lower_triangle : std::false_type
+{};
+template <typename Matrix, typename Ordering>
+struct Reads_lower_triangle<Eigen::SimplicialLLT<Matrix, Eigen::Lower, Ordering> > : std::true_type
+{};
+template <typename Matrix, typename Ordering>
+struct Reads_lower_triangle<Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Ordering> > : std::true_type
+{};
+#ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
+template <typename Matrix>
+struct Reads_lower_triangle<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> > : std::true_type
+{};
+template <typename Matrix>
+struct Reads_lower_triangle<Eigen::CholmodSimplicialLLT<Matrix, Eigen::Lower> > : std::true_type
+{};
+template <typename Matrix>
+struct Reads_lower_triangle<Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> > : std::true_type
+{};
+template <typename Matrix>
+struct Reads_lower_triangle<Eigen::CholmodDecomposition<Matrix, Eigen::Lower> > : std::true_type
 {};
 #endif
 
@@ -218,6 +259,15 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
     m_analyzed = true;
   }
 
+  static Complex_sparse_matrix matrix_to_factor(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                                double shift)
+  {
+    if constexpr(Reads_lower_triangle<EigenSolver>::value)
+      return shifted_lower_triangle(A, M, shift);
+    else
+      return shifted_matrix(A, M, shift);
+  }
+
 public:
   static constexpr bool detects_indefinite = Detects_indefinite<EigenSolver>::value;
 
@@ -244,6 +294,19 @@ public:
     }
     m_analyzed = solver.info() == Eigen::Success && has_positive_pivots(solver, 0);
     return m_analyzed;
+  }
+
+  // Factors A + shift M (only its lower triangle, if that is all the solver reads).
+  void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
+                      bool same_pattern = false)
+  {
+    factor(matrix_to_factor(A, M, shift), same_pattern);
+  }
+
+  bool factor_shifted_if_positive_definite(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                           double shift, bool same_pattern = false)
+  {
+    return factor_if_positive_definite(matrix_to_factor(A, M, shift), same_pattern);
   }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const

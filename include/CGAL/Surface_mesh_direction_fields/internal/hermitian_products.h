@@ -32,14 +32,6 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-inline bool have_same_pattern(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M)
-{
-  return A.isCompressed() && M.isCompressed() && A.rows() == M.rows() && A.cols() == M.cols() &&
-         A.nonZeros() == M.nonZeros() &&
-         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, M.outerIndexPtr()) &&
-         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), M.innerIndexPtr());
-}
-
 // Y = H X for a Hermitian H stored with both triangles in compressed columns:
 // row i of H is the conjugate of its column i, so each entry of Y is a dot
 // product over one stored column -- contiguous reads, and rows can be

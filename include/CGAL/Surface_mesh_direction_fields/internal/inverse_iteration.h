@@ -135,19 +135,6 @@ inline double m_norm(const Complex_sparse_matrix& M, const Complex_vector& x)
   return std::sqrt((std::max)(0., x.dot(M * x).real()));  // dot conjugates its left argument
 }
 
-// A + shift M, without Eigen's general sparse sum when both have the same
-// pattern (as the assembled A and M do): a copy of A and one pass over the values.
-inline Complex_sparse_matrix shifted_matrix(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift)
-{
-  if(!have_same_pattern(A, M))
-    return A + shift * M;
-  Complex_sparse_matrix S = A;
-  Complex* s = S.valuePtr();
-  const Complex* m = M.valuePtr();
-  parallel_for_each_index(static_cast<std::size_t>(S.nonZeros()), [&](std::size_t p) { s[p] += shift * m[p]; });
-  return S;
-}
-
 // Makes the columns of W orthonormal for the diagonal inner product
 // <x, y> = x^* diag(d) y and orthogonal to the (already orthonormal) columns
 // of V: block Gram-Schmidt against V, then Gram-Schmidt within W, each
@@ -305,14 +292,14 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   if(Factored_matrix<SparseSolver>::detects_indefinite && options.shift_fraction * estimate.bound > result.shift)
   {
     const double trial = -options.shift_fraction * estimate.bound;
-    factored_shifted = factored.factor_if_positive_definite(shifted_matrix(A, M, trial), options.same_pattern);
+    factored_shifted = factored.factor_shifted_if_positive_definite(A, M, trial, options.same_pattern);
     if(factored_shifted)
       result.shift = trial;
     else
       result.shift_rejected = true;
   }
   if(!factored_shifted)
-    factored.factor(shifted_matrix(A, M, result.shift), options.same_pattern);
+    factored.factor_shifted(A, M, result.shift, options.same_pattern);
   const auto t1 = Clock::now();
 
   const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
