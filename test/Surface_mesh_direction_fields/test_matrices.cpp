@@ -473,6 +473,14 @@ int main()
 #endif
   }
 
+  {
+    // the 32-bit indices of the indexed mesh read back as std::size_t, the sentinel included
+    auto round_trip = [](std::size_t i) { return static_cast<std::size_t>(SI::Compact_index(i)) == i; };
+    report.check(sizeof(SI::Compact_index) == 4 && round_trip(0) && round_trip(123456789) &&
+                   round_trip(SI::Compact_index::largest) && round_trip(SI::no_index),
+                 "compact indices: 4 bytes, 0, 123456789, the largest index and no_index read back unchanged");
+  }
+
   Mesh sphere, torus, disk;
   make_icosphere(sphere, 3);
   make_torus(torus, 2., 0.7, 40, 20);

@@ -142,7 +142,8 @@ public:
 
   \tparam NamedParameters a sequence of named parameters
   \throws Invalid_input_error for an empty mesh, a non-triangle face, a non-manifold vertex, a non-finite
-          coordinate, or a zero-area face while `intrinsic_mollification` is `0`
+          coordinate, a zero-area face while `intrinsic_mollification` is `0`, or a mesh too large for
+          32-bit indices (see `compute_globally_optimal_directions()`)
   */
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Globally_optimal_direction_field(const TriangleMesh& tmesh,

@@ -39,8 +39,8 @@ public:
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
 Thrown when the input mesh or a parameter does not meet the documented
-requirements: an empty mesh, a non-triangle face, a non-manifold vertex, a
-non-finite coordinate, a degenerate (zero-area) face when the intrinsic
+requirements: an empty mesh, a mesh too large for 32-bit indices, a
+non-triangle face, a non-manifold vertex, a non-finite coordinate, a degenerate (zero-area) face when the intrinsic
 mollification is switched off, a degree `n < 1`, or a smoothness parameter
 `s` outside `[-1, 1]`. The input is left untouched.
 */

@@ -228,7 +228,8 @@ the final residual, the Euler characteristic and the index sum, and for aligned 
 the \f$ \lambda_t \f$ used and the alignment weight reached; and the timings.
 
 \throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex or a
-        non-finite coordinate, a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, if
+        non-finite coordinate, has more than 715,827,882 faces or 2,147,483,646 vertices (indices are stored in
+        32 bits), a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, if
         `s` is outside \f$ [-1, 1] \f$, for curvature alignment with an odd `n`, if
         \f$ \lambda_t \ge \lambda_1 \f$, if `t` is not in \f$ (0, 1) \f$ or given without guidance, if both
         \f$ \lambda_t \f$ and `t` are given, if a guidance vector is not finite, or if a constrained direction

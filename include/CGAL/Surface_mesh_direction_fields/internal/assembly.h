@@ -65,8 +65,8 @@ typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Complex_vector;
 // The vertices and faces of one connected component.
 struct Component
 {
-  std::vector<std::size_t> vertices;  // global index of each local vertex
-  std::vector<std::size_t> faces;     // global face indices
+  std::vector<Compact_index> vertices;  // global index of each local vertex
+  std::vector<Compact_index> faces;     // global face indices
 };
 
 // All components, and the index of each vertex within its component
@@ -74,7 +74,7 @@ struct Component
 struct Components
 {
   std::vector<Component> list;
-  std::vector<std::size_t> local_index;
+  std::vector<Compact_index> local_index;
 };
 
 inline Components split_into_components(const Indexed_mesh& m)
@@ -91,7 +91,7 @@ inline Components split_into_components(const Indexed_mesh& m)
   {
     const std::size_t c = m.component_of_vertex[start];
     if(c == no_index || comps.local_index[start] != no_index) continue;
-    std::vector<std::size_t>& order = comps.list[c].vertices;
+    std::vector<Compact_index>& order = comps.list[c].vertices;
     comps.local_index[start] = 0;
     order.push_back(start);
     for(std::size_t next = 0; next < order.size(); ++next)
@@ -140,10 +140,9 @@ inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces
   {
     // Intrinsic: the sides from i = t[c] to j = t[c+1] and k = t[c+2], and the
     // opposite side j -> k, from the (possibly mollified) edge lengths.
-    const double l_ij = geometry.side_length[c];
-    const double l_jk = geometry.side_length[(c + 1) % 3];
-    const double l_ki = geometry.side_length[(c + 2) % 3];
-    const double g11 = l_ij * l_ij, g22 = l_ki * l_ki, g12 = geometry.corner_dot[c];
+    const double g11 = geometry.squared_length[c], g22 = geometry.squared_length[(c + 2) % 3];
+    const double g12 = geometry.corner_dot[c];
+    const double l_jk2 = geometry.squared_length[(c + 1) % 3];
     const Complex r_jk = con.transport[3 * f + (c + 1) % 3];  // j -> k runs counter-clockwise
 
     const Complex dirichlet = (r_jk / area) * ((g11 + g22) * f1 + g12 * f2);
@@ -154,7 +153,7 @@ inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces
     lm.energy_pair[c] = dirichlet - s * ((omega / area) * mass + 0.5 * I * r_jk);
 
     const double dirichlet_diagonal =
-      (l_jk * l_jk + omega * omega * (g11 + g12 + g22) / 90.) / (4. * area);
+      (l_jk2 + omega * omega * (g11 + g12 + g22) / 90.) / (4. * area);
     lm.mass_diagonal[c] = area / 6.;
     lm.energy_diagonal[c] = dirichlet_diagonal - s * omega / 6.;  // (Omega/|t|) * |t|/6
   }
@@ -216,7 +215,7 @@ struct Column_entry
 // leaves one entry per neighbour to sort instead of two. Rows that still
 // repeat (a multiple edge) are merged after the sort.
 inline void gather_column(const Indexed_mesh& m, const Local_matrix_array& local,
-                          const std::vector<std::size_t>& local_index, std::size_t v,
+                          const std::vector<Compact_index>& local_index, std::size_t v,
                           std::vector<Column_entry>& column)
 {
   column.clear();
@@ -269,7 +268,7 @@ inline void gather_column(const Indexed_mesh& m, const Local_matrix_array& local
 // compressed arrays (in parallel: each column gathers its own entries).
 // Returns false if a column's size is not the given one.
 inline bool fill_columns(const Indexed_mesh& m, const Local_matrix_array& local, const Component& comp,
-                         const std::vector<std::size_t>& local_index,
+                         const std::vector<Compact_index>& local_index,
                          const std::vector<Complex_sparse_matrix::StorageIndex>& column_size, Energy_and_mass& em)
 {
   typedef Complex_sparse_matrix::StorageIndex Storage_index;
@@ -320,7 +319,7 @@ inline bool fill_columns(const Indexed_mesh& m, const Local_matrix_array& local,
 // are written directly into the compressed arrays, without triplets, in one
 // gathering pass when the fans have no multiple edge (two otherwise).
 inline Energy_and_mass assemble_component(const Indexed_mesh& m, const Local_matrix_array& local,
-                                          const Component& comp, const std::vector<std::size_t>& local_index)
+                                          const Component& comp, const std::vector<Compact_index>& local_index)
 {
   typedef Complex_sparse_matrix::StorageIndex Storage_index;
   const std::size_t nc = comp.vertices.size();
@@ -369,7 +368,7 @@ inline std::vector<Energy_and_mass> assemble_energy_and_mass(const Indexed_mesh&
 // A and M of one component (computes the local matrices of its faces only).
 inline Energy_and_mass assemble_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
                                                 const Connection& con, const Component& comp,
-                                                const std::vector<std::size_t>& local_index, double s)
+                                                const std::vector<Compact_index>& local_index, double s)
 {
   Local_matrix_array local(m.number_of_faces());
   for(std::size_t f : comp.faces) local.construct(f, local_matrices(m, ts, con, f, s));

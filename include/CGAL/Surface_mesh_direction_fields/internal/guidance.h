@@ -60,7 +60,7 @@ inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexe
   {
     const double beta = dihedral_angle(m, corner);
     if(beta == 0.) continue;
-    const double length = face_geometry(m, corner / 3, ts.mollification).side_length[corner % 3];
+    const double length = std::sqrt(face_geometry(m, corner / 3, ts.mollification).squared_length[corner % 3]);
     q[m.vertex_of_corner(corner)] += -0.25 * beta * length * std::polar(1., 2. * ts.corner_theta[corner]);
   }
   return q;

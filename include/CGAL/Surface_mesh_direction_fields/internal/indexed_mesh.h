@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -53,23 +54,41 @@ namespace internal {
 
 constexpr std::size_t no_index = static_cast<std::size_t>(-1);
 
+// An index stored in 32 bits that reads and writes as a std::size_t,
+// `no_index` included (stored as -1, read back by sign extension, which costs
+// nothing). The mesh arrays hold these: half the memory and memory traffic of
+// std::size_t, while the code computes with std::size_t throughout. Indices
+// must stay below 2^31 - 1: make_indexed_mesh() rejects a mesh with more
+// corners than that (715 million faces).
+class Compact_index
+{
+  std::int32_t m_value;
+
+public:
+  static constexpr std::size_t largest = static_cast<std::size_t>(INT32_MAX) - 1;
+
+  Compact_index() = default;
+  Compact_index(std::size_t i) : m_value(i == no_index ? -1 : static_cast<std::int32_t>(i)) {}
+  operator std::size_t() const { return static_cast<std::size_t>(static_cast<std::ptrdiff_t>(m_value)); }
+};
+
 struct Indexed_mesh
 {
   std::vector<std::array<double, 3> > points;        // per vertex
-  std::vector<std::array<std::size_t, 3> > faces;    // counter-clockwise
-  std::vector<std::size_t> fan_offsets;              // |V| + 1 entries
-  std::vector<std::size_t> fan_corners;              // corners 3 f + c, counter-clockwise
+  std::vector<std::array<Compact_index, 3> > faces;  // counter-clockwise
+  std::vector<Compact_index> fan_offsets;            // |V| + 1 entries
+  std::vector<Compact_index> fan_corners;            // corners 3 f + c, counter-clockwise
   std::vector<unsigned char> is_border_vertex;       // per vertex
   // For the side of corner 3f+c (the halfedge faces[f][c] -> faces[f][c+1]),
   // the corner of the other face whose first side is the reverse halfedge;
   // `no_index` on the border.
-  std::vector<std::size_t> twin_corner;
+  std::vector<Compact_index> twin_corner;
 
   // Connected components (through shared vertices). Isolated vertices belong
   // to no component (`no_index`).
   std::size_t number_of_components = 0;
-  std::vector<std::size_t> component_of_vertex;
-  std::vector<std::size_t> component_of_face;
+  std::vector<Compact_index> component_of_vertex;
+  std::vector<Compact_index> component_of_face;
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_faces() const { return faces.size(); }
@@ -130,6 +149,9 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
   if(nv == 0 || nf == 0)
     throw Invalid_input_error("empty mesh: the mesh has no " + std::string(nv == 0 ? "vertex" : "face"));
+  if(nv > Compact_index::largest || nf > Compact_index::largest / 3)
+    throw Invalid_input_error("the mesh is too large: at most " + std::to_string(Compact_index::largest / 3) +
+                              " faces and " + std::to_string(Compact_index::largest) + " vertices");
 
   m.points.resize(nv);
   for(auto v : vertices(tm))

@@ -46,14 +46,15 @@ struct Tangent_spaces
   double mollification = 0.;              // the length added to every edge (0: none was needed)
 };
 
-// The side lengths and the scalar products of the corners of one face,
-// computed when needed rather than stored (96 bytes per vertex, about a
-// tenth of the memory of the whole computation besides the factor; the
-// assembly recomputes them for the cost of a few square roots per face).
+// The squared side lengths and the scalar products of the corners of one
+// face, computed when needed rather than stored (96 bytes per vertex, about
+// a tenth of the memory of the whole computation besides the factor). The
+// matrices need the lengths only squared, so without mollification this is a
+// few products per face.
 struct Face_geometry
 {
-  double side_length[3];  // side c: faces[f][c] -> faces[f][c+1]
-  double corner_dot[3];   // <p_ij, p_ik>: scalar product of corner c's two sides
+  double squared_length[3];  // side c: faces[f][c] -> faces[f][c+1]
+  double corner_dot[3];      // <p_ij, p_ik>: scalar product of corner c's two sides
 };
 
 inline double embedded_side_length(const Indexed_mesh& m, std::size_t f, int c)
@@ -69,35 +70,36 @@ inline Face_geometry face_geometry(const Indexed_mesh& m, std::size_t f, double 
 {
   Face_geometry g;
   const auto& t = m.faces[f];
-  for(int c = 0; c < 3; ++c)
-  {
-    g.side_length[c] = embedded_side_length(m, f, c);
-    if(mollification > 0.) g.side_length[c] += mollification;
-  }
-  const double* l = g.side_length;
   if(mollification == 0.)
   {
     for(int c = 0; c < 3; ++c)
-      g.corner_dot[c] = dot(m.points[t[(c + 1) % 3]] - m.points[t[c]], m.points[t[(c + 2) % 3]] - m.points[t[c]]);
+    {
+      const Vec3 first = m.points[t[(c + 1) % 3]] - m.points[t[c]];
+      g.squared_length[c] = squared_norm(first);
+      g.corner_dot[c] = dot(first, m.points[t[(c + 2) % 3]] - m.points[t[c]]);
+    }
     if(area) *area = 0.5 * norm(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+    return g;
   }
-  else
+  double l[3];
+  for(int c = 0; c < 3; ++c)
   {
-    for(int c = 0; c < 3; ++c)
-    {
-      // corner c lies between its first side l[c] and the side l[c+2]; l[c+1] is opposite
-      const double a = l[c], b = l[(c + 2) % 3], o = l[(c + 1) % 3];
-      g.corner_dot[c] = 0.5 * (a * a + b * b - o * o);
-    }
-    if(area)
-    {
-      double x = l[0], y = l[1], z = l[2];  // sorted x >= y >= z
-      if(x < y) std::swap(x, y);
-      if(y < z) std::swap(y, z);
-      if(x < y) std::swap(x, y);
-      const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
-      *area = 0.25 * std::sqrt((std::max)(0., product));
-    }
+    l[c] = embedded_side_length(m, f, c) + mollification;
+    g.squared_length[c] = l[c] * l[c];
+  }
+  for(int c = 0; c < 3; ++c)
+  {
+    // corner c lies between its first side l[c] and the side l[c+2]; l[c+1] is opposite
+    g.corner_dot[c] = 0.5 * (g.squared_length[c] + g.squared_length[(c + 2) % 3] - g.squared_length[(c + 1) % 3]);
+  }
+  if(area)
+  {
+    double x = l[0], y = l[1], z = l[2];  // sorted x >= y >= z
+    if(x < y) std::swap(x, y);
+    if(y < z) std::swap(y, z);
+    if(x < y) std::swap(x, y);
+    const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+    *area = 0.25 * std::sqrt((std::max)(0., product));
   }
   return g;
 }
@@ -156,8 +158,8 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
     double area = 0.;
     const Face_geometry g = face_geometry(m, f, ts.mollification, &area);
     ts.face_area[f] = area;
-    const double longest = (std::max)({g.side_length[0], g.side_length[1], g.side_length[2]});
-    degenerate[f] = !(area > 1e-14 * longest * longest) || !std::isfinite(area);
+    const double longest_squared = (std::max)({g.squared_length[0], g.squared_length[1], g.squared_length[2]});
+    degenerate[f] = !(area > 1e-14 * longest_squared) || !std::isfinite(area);
     for(int c = 0; c < 3; ++c)
       ts.corner_angle[3 * f + c] = std::atan2(2. * area, g.corner_dot[c]);
   });
