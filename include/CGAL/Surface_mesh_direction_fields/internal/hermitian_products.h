@@ -24,9 +24,12 @@
 #include <algorithm>
 #include <complex>
 
-// Products of the Hermitian matrices A and M (both triangles stored, in
-// compressed columns) with blocks of vectors: the products the eigen-solve
-// and its coarse estimate spend their memory traffic on.
+// The products the eigen-solve and its coarse estimate spend their memory
+// traffic on: the Hermitian matrices A and M (both triangles stored, in
+// compressed columns) times blocks of vectors, and the tall basis V (|V| rows,
+// a dozen columns) times small matrices, or its adjoint times blocks. All run
+// in parallel, over rows, with results that do not depend on the thread
+// count (Eigen's own dense products run on one thread).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -101,6 +104,51 @@ inline void hermitian_multiply_pair(const Complex_sparse_matrix& A, const Comple
   });
 }
 
+// V^* X and V^* Y for tall V, X, Y with the same rows, in one pass over V: the
+// partial products of fixed chunks of rows, added in chunk order.
+inline void adjoint_products(const Eigen::Ref<const Complex_dense_matrix>& V,
+                             const Eigen::Ref<const Complex_dense_matrix>& X,
+                             const Eigen::Ref<const Complex_dense_matrix>& Y, Complex_dense_matrix& VX,
+                             Complex_dense_matrix& VY)
+{
+  const Eigen::Index k = V.cols(), p = X.cols(), q = Y.cols();
+  Complex_dense_matrix zero = Complex_dense_matrix::Zero(k, p + q);
+  const Complex_dense_matrix both = parallel_reduce_in_order(
+    static_cast<std::size_t>(V.rows()), zero,
+    [&](std::size_t begin, std::size_t end) {
+      const auto rows = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+      Complex_dense_matrix part(k, p + q);
+      part.leftCols(p).noalias() = V.middleRows(first, rows).adjoint() * X.middleRows(first, rows);
+      part.rightCols(q).noalias() = V.middleRows(first, rows).adjoint() * Y.middleRows(first, rows);
+      return part;
+    },
+    [](const Complex_dense_matrix& a, const Complex_dense_matrix& b) { return Complex_dense_matrix(a + b); });
+  VX = both.leftCols(p);
+  VY = both.rightCols(q);
+}
+
+inline Complex_dense_matrix adjoint_product(const Eigen::Ref<const Complex_dense_matrix>& V,
+                                            const Eigen::Ref<const Complex_dense_matrix>& X)
+{
+  Complex_dense_matrix VX, unused;
+  adjoint_products(V, X, X.leftCols(0), VX, unused);
+  return VX;
+}
+
+// out = V C (`subtract` false) or out -= V C
+// (`subtract` true), for tall V and small C, row chunk by row chunk.
+inline void combine_columns(const Eigen::Ref<const Complex_dense_matrix>& V, const Complex_dense_matrix& C,
+                            Complex_dense_matrix& out, bool subtract = false)
+{
+  if(!subtract) out.resize(V.rows(), C.cols());
+  parallel_for_each_chunk(static_cast<std::size_t>(V.rows()), [&](std::size_t begin, std::size_t end) {
+    const auto rows = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+    if(subtract)
+      out.middleRows(first, rows).noalias() -= V.middleRows(first, rows) * C;
+    else
+      out.middleRows(first, rows).noalias() = V.middleRows(first, rows) * C;
+  });
+}
 
 } // namespace internal
 } // namespace Surface_mesh_direction_fields

@@ -153,7 +153,7 @@ Complex_dense_matrix d_orthonormalize(const Eigen::VectorXd& d, const Basis& V, 
   for(int pass = 0; pass < 2 && V.cols() > 0; ++pass)
   {
     const Complex_dense_matrix DW = d.asDiagonal() * W;
-    W.noalias() -= V * (V.adjoint() * DW);
+    combine_columns(V, adjoint_product(V, DW), W, true);
     bool accurate = true;
     for(Eigen::Index j = 0; j < W.cols(); ++j)
       accurate = accurate && d_norm(W.col(j)) > 0.5 * norm_before[j];
@@ -316,16 +316,17 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
     const Eigen::Index q = Q.cols();
     if(q == 0) return q;
     hermitian_multiply_pair(A, M, same_pattern, Q, AQ, MQ);
+    V.middleCols(k, q) = Q;
+    Complex_dense_matrix VAQ, VMQ;  // [V Q]^* A Q and [V Q]^* M Q, in one pass over the basis
+    adjoint_products(V.leftCols(k + q), AQ, MQ, VAQ, VMQ);
     H.conservativeResize(k + q, k + q);
     G.conservativeResize(k + q, k + q);
-    H.topRightCorner(k, q) = V.leftCols(k).adjoint() * AQ;
-    G.topRightCorner(k, q) = V.leftCols(k).adjoint() * MQ;
+    H.topRightCorner(k, q) = VAQ.topRows(k);
+    G.topRightCorner(k, q) = VMQ.topRows(k);
     H.bottomLeftCorner(q, k) = H.topRightCorner(k, q).adjoint();
     G.bottomLeftCorner(q, k) = G.topRightCorner(k, q).adjoint();
-    const Complex_dense_matrix QAQ = Q.adjoint() * AQ, QMQ = Q.adjoint() * MQ;
-    H.bottomRightCorner(q, q) = 0.5 * (QAQ + QAQ.adjoint());
-    G.bottomRightCorner(q, q) = 0.5 * (QMQ + QMQ.adjoint());
-    V.middleCols(k, q) = Q;
+    H.bottomRightCorner(q, q) = 0.5 * (VAQ.bottomRows(q) + VAQ.bottomRows(q).adjoint());
+    G.bottomRightCorner(q, q) = 0.5 * (VMQ.bottomRows(q) + VMQ.bottomRows(q).adjoint());
     k += q;
     return q;
   };
@@ -377,11 +378,11 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
     const Eigen::Index keep = (std::min)(k, (std::max)(best, options.restart_size));
     if(k + block > basis_size)  // the next step restarts: keep the best Ritz vectors
     {
-      kept.noalias() = V.leftCols(k) * ritz.eigenvectors().leftCols(keep);
+      combine_columns(V.leftCols(k), ritz.eigenvectors().leftCols(keep), kept);
       next = kept.leftCols(best);
     }
     else
-      next = V.leftCols(k) * ritz.eigenvectors().leftCols(best);
+      combine_columns(V.leftCols(k), ritz.eigenvectors().leftCols(best), next);
     u = next.col(0);
     if(block == 1)
       hermitian_multiply_pair(A, M, same_pattern, next, AU, MX);  // next = u

@@ -59,6 +59,25 @@ void parallel_for_each_index(std::size_t n, const IndexBody& body)
   });
 }
 
+// body(begin, end) on the fixed chunks [k g, (k + 1) g) of [0, n), g =
+// `parallel_grain_size`, in parallel: unlike parallel_for_each_range(), the
+// chunks do not depend on the scheduling, so neither does a result computed
+// chunk by chunk (a block product, for instance).
+template <typename ChunkBody>
+void parallel_for_each_chunk(std::size_t n, const ChunkBody& body)
+{
+  const std::size_t chunks = (n + parallel_grain_size - 1) / parallel_grain_size;
+  auto run_chunk = [&](std::size_t k) { body(k * parallel_grain_size, (std::min)(n, (k + 1) * parallel_grain_size)); };
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
+  if(chunks > 1)
+  {
+    tbb::parallel_for(std::size_t(0), chunks, run_chunk);
+    return;
+  }
+#endif
+  for(std::size_t k = 0; k < chunks; ++k) run_chunk(k);
+}
+
 // A reduction over [0, n) whose result does not depend on the number of
 // threads: `chunk_value(begin, end)` reduces fixed chunks of
 // `parallel_grain_size` indices (in parallel), then `combine` folds the
