@@ -11,7 +11,8 @@
 //    its fallback, when the shift is too large) gives the eigenpair of the
 //    unshifted solve;
 //  * the matrices handed to the solver: A + shift M, or its lower triangle for
-//    the Cholesky solvers, equal to Eigen's sum bit for bit.
+//    the Cholesky solvers, equal to Eigen's sum bit for bit; the parallel
+//    basis products of the eigen-solve equal Eigen's.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -479,6 +480,26 @@ int main()
     report.check(sizeof(SI::Compact_index) == 4 && round_trip(0) && round_trip(123456789) &&
                    round_trip(SI::Compact_index::largest) && round_trip(SI::no_index),
                  "compact indices: 4 bytes, 0, 123456789, the largest index and no_index read back unchanged");
+  }
+
+  {
+    // the parallel basis products of the eigen-solve against Eigen's own, on
+    // a row count that is not a multiple of the chunk size
+    const Eigen::Index rows = 3 * static_cast<Eigen::Index>(SI::parallel_grain_size) + 17;
+    const SI::Complex_dense_matrix V = SI::Complex_dense_matrix::Random(rows, 7),
+                                   X = SI::Complex_dense_matrix::Random(rows, 2),
+                                   Y = SI::Complex_dense_matrix::Random(rows, 1),
+                                   C = SI::Complex_dense_matrix::Random(7, 3);
+    SI::Complex_dense_matrix VX, VY, VC, W = X.leftCols(1);
+    SI::adjoint_products(V, X, Y, VX, VY);
+    SI::combine_columns(V, C, VC);
+    SI::combine_columns(V.leftCols(2), C.topLeftCorner(2, 1), W, true);
+    const SI::Complex_dense_matrix VX_ref = V.adjoint() * X, VY_ref = V.adjoint() * Y, VC_ref = V * C;
+    const SI::Complex_dense_matrix W_ref = X.leftCols(1) - V.leftCols(2) * C.topLeftCorner(2, 1);
+    report.check((VX - VX_ref).norm() <= 1e-13 * VX_ref.norm() && (VY - VY_ref).norm() <= 1e-13 * VY_ref.norm() &&
+                   (VC - VC_ref).norm() <= 1e-14 * VC_ref.norm() && (W - W_ref).norm() <= 1e-14 * W_ref.norm() &&
+                   SI::adjoint_product(V, X) == VX,
+                 "basis products V^* X, V^* Y, V C and W - V C equal Eigen's");
   }
 
   Mesh sphere, torus, disk;

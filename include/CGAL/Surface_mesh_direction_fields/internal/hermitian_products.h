@@ -135,8 +135,8 @@ inline Complex_dense_matrix adjoint_product(const Eigen::Ref<const Complex_dense
   return VX;
 }
 
-// out = V C (`subtract` false) or out -= V C
-// (`subtract` true), for tall V and small C, row chunk by row chunk.
+// out = V C, or out -= V C if `subtract`, for tall V and small C, by fixed
+// chunks of rows.
 inline void combine_columns(const Eigen::Ref<const Complex_dense_matrix>& V, const Complex_dense_matrix& C,
                             Complex_dense_matrix& out, bool subtract = false)
 {
