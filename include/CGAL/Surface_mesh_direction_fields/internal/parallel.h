@@ -88,14 +88,9 @@ T parallel_reduce_in_order(std::size_t n, T initial, const ChunkValue& chunk_val
 {
   const std::size_t chunks = (n + parallel_grain_size - 1) / parallel_grain_size;
   std::vector<T> values(chunks, initial);
-  auto reduce_chunk = [&](std::size_t k) {
-    values[k] = chunk_value(k * parallel_grain_size, (std::min)(n, (k + 1) * parallel_grain_size));
-  };
-#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
-  tbb::parallel_for(std::size_t(0), chunks, reduce_chunk);
-#else
-  for(std::size_t k = 0; k < chunks; ++k) reduce_chunk(k);
-#endif
+  parallel_for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+    values[begin / parallel_grain_size] = chunk_value(begin, end);
+  });
   T result = initial;
   for(const T& value : values) result = combine(result, value);
   return result;

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <utility>
 #include <complex>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -128,29 +129,34 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
   ts.mollification = 0.;
   if(relative_delta > 0. && nf > 0)
   {
-    const double total_length = parallel_reduce_in_order(
-      nf, 0.,
+    // One pass for the total length and the smallest slack a + b - o of the
+    // triangle inequalities: max(delta - slack) = delta - min(slack), also in
+    // floating point (subtracting from delta is monotone).
+    struct Lengths
+    {
+      double total, smallest_slack;
+    };
+    const Lengths lengths = parallel_reduce_in_order(
+      nf, Lengths{0., std::numeric_limits<double>::infinity()},
       [&](std::size_t begin, std::size_t end) {
-        double sum = 0.;
-        for(std::size_t f = begin; f < end; ++f)
-          for(int c = 0; c < 3; ++c) sum += embedded_side_length(m, f, c);
-        return sum;
-      },
-      [](double a, double b) { return a + b; });
-    const double delta = relative_delta * total_length / (3. * nf);
-    ts.mollification = parallel_reduce_in_order(
-      nf, 0.,
-      [&](std::size_t begin, std::size_t end) {
-        double largest = 0.;
+        Lengths chunk{0., std::numeric_limits<double>::infinity()};
         for(std::size_t f = begin; f < end; ++f)
         {
           const double l[3] = {embedded_side_length(m, f, 0), embedded_side_length(m, f, 1),
                                embedded_side_length(m, f, 2)};
-          for(int c = 0; c < 3; ++c) largest = (std::max)(largest, delta - (l[c] + l[(c + 1) % 3] - l[(c + 2) % 3]));
+          for(int c = 0; c < 3; ++c)
+          {
+            chunk.total += l[c];
+            chunk.smallest_slack = (std::min)(chunk.smallest_slack, l[c] + l[(c + 1) % 3] - l[(c + 2) % 3]);
+          }
         }
-        return largest;
+        return chunk;
       },
-      [](double a, double b) { return (std::max)(a, b); });
+      [](const Lengths& a, const Lengths& b) {
+        return Lengths{a.total + b.total, (std::min)(a.smallest_slack, b.smallest_slack)};
+      });
+    const double delta = relative_delta * lengths.total / (3. * nf);
+    ts.mollification = (std::max)(0., delta - lengths.smallest_slack);
   }
 
   std::vector<unsigned char> degenerate(nf, 0);
