@@ -9,10 +9,12 @@
 //  * the coarse estimate of the eigen-solve: the coarse matrices are P^* A P
 //    and P^* M P, the bound is >= lambda_1, and the shifted factorization (or
 //    its fallback, when the shift is too large) gives the eigenpair of the
-//    unshifted solve;
+//    unshifted solve, and a rejected trial shift prints nothing;
 //  * the matrices handed to the solver: A + shift M, or its lower triangle for
 //    the Cholesky solvers, equal to Eigen's sum bit for bit; the parallel
-//    basis products of the eigen-solve equal Eigen's.
+//    basis products of the eigen-solve equal Eigen's;
+//  * the parallel solve with CHOLMOD's supernodal factor: CHOLMOD's solution,
+//    the same bits on any number of threads, a plan of whole subtrees.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -27,10 +29,16 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <cmath>
 #include <complex>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -375,6 +383,34 @@ static void check_shifted_matrices(Test_report& report, const std::string& name,
                name + ": the same with a mass matrix of another pattern");
 }
 
+// Counts what CHOLMOD prints while an object of this class lives (all of
+// CHOLMOD's printing goes through SuiteSparse_config.printf_func); without
+// CHOLMOD there is nothing to count.
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+static int cholmod_messages = 0;
+static int count_cholmod_message(const char*, ...)
+{
+  ++cholmod_messages;
+  return 0;
+}
+struct Cholmod_message_counter
+{
+  int (*saved)(const char*, ...) = SuiteSparse_config.printf_func;
+  Cholmod_message_counter()
+  {
+    cholmod_messages = 0;
+    SuiteSparse_config.printf_func = count_cholmod_message;
+  }
+  ~Cholmod_message_counter() { SuiteSparse_config.printf_func = saved; }
+  int count() const { return cholmod_messages; }
+};
+#else
+struct Cholmod_message_counter
+{
+  int count() const { return 0; }
+};
+#endif
+
 // The coarse estimate and the shifted factorization of the eigen-solve, with
 // the solver type `Solver`, on a mesh with a simple lambda_1.
 template <typename Solver>
@@ -446,11 +482,124 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
   options.shift_fraction = 4.;
   Solver fallback_solver;
   SI::Factored_matrix<Solver> fallback_factored(fallback_solver);
+  Cholmod_message_counter messages;
   const SI::Eigen_solve_result fallback = SI::smallest_eigenpair(A, M, fallback_factored, options);
+  const int printed = messages.count();
   report.check(fallback.shift_rejected && fallback.shift == reference.shift,
                name + ": a shift above lambda_1 is detected and replaced by epsilon");
+  report.check(printed == 0, name + ": the rejected trial shift prints nothing (" + std::to_string(printed) + " messages)");
   report.check(same_eigenpair(fallback), name + ": the fallback gives the same eigenpair");
 }
+
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+// A Hermitian positive definite matrix with the pattern of a g x g grid: a
+// connection Laplacian (unit phases on the edges) plus 0.1 I.
+static SI::Complex_sparse_matrix grid_matrix(int g)
+{
+  std::vector<Eigen::Triplet<Complex> > entries;
+  auto id = [g](int i, int j) { return i * g + j; };
+  for(int i = 0; i < g; ++i)
+    for(int j = 0; j < g; ++j)
+    {
+      double degree = 0.;
+      for(const auto& [di, dj] : {std::pair<int, int>(1, 0), std::pair<int, int>(0, 1), std::pair<int, int>(-1, 0), std::pair<int, int>(0, -1)})
+      {
+        const int ni = i + di, nj = j + dj;
+        if(ni < 0 || nj < 0 || ni >= g || nj >= g) continue;
+        degree += 1.;
+        const int a = (std::min)(id(i, j), id(ni, nj)), b = (std::max)(id(i, j), id(ni, nj));
+        const Complex phase = std::polar(1., 0.37 * a + 1.1 * b);
+        entries.emplace_back(id(i, j), id(ni, nj), id(i, j) < id(ni, nj) ? -std::conj(phase) : -phase);
+      }
+      entries.emplace_back(id(i, j), id(i, j), Complex(degree + 0.1, 0.));
+    }
+  SI::Complex_sparse_matrix S(g * g, g * g);
+  S.setFromTriplets(entries.begin(), entries.end());
+  return S;
+}
+
+// The package's parallel solve with CHOLMOD's supernodal factor: the same
+// solution as CHOLMOD's own solve, the same bits for any number of threads,
+// and a plan that cuts the tree into whole subtrees and a top.
+static void check_parallel_supernodal_solve(Test_report& report, int g)
+{
+  typedef Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> Llt;
+  typedef CGAL::Eigen_solver_traits<Llt> Cholmod;
+  const std::string name = "parallel supernodal solve, grid " + std::to_string(g) + " x " + std::to_string(g);
+  const SI::Complex_sparse_matrix S = grid_matrix(g);
+  Cholmod traits;
+  SI::Factored_matrix<Cholmod> factored(traits);
+  factored.factor(S);
+  const cholmod_factor* L = SI::Cholmod_factor_access<Llt>::factor(traits.solver());
+  report.check(L != nullptr && L->is_super && L->is_ll, name + ": CHOLMOD's factor is supernodal LL^*");
+  if(L == nullptr || !L->is_super) return;
+
+  SI::Supernodal_factor_view<int> view;
+  view.n = L->n;
+  view.supernodes = L->nsuper;
+  view.super = static_cast<const int*>(L->super);
+  view.row_start = static_cast<const int*>(L->pi);
+  view.rows = static_cast<const int*>(L->s);
+  view.value_start = static_cast<const int*>(L->px);
+  view.values = static_cast<const std::complex<double>*>(L->x);
+  view.permutation = static_cast<const int*>(L->Perm);
+  const SI::Supernodal_solve_plan plan(view);
+  // every supernode in the top or in exactly one task; a supernode's parent
+  // is in its task or in the top; the top's parents are in the top
+  const std::size_t ns = view.supernodes;
+  std::vector<int> owner(ns, -2);  // -1: top, t: task t
+  bool partition = plan.valid();
+  for(std::size_t s : plan.top()) owner[s] = -1;
+  for(std::size_t t = 0; t < plan.tasks().size(); ++t)
+    for(std::size_t s = plan.tasks()[t].first; s <= plan.tasks()[t].last; ++s)
+    {
+      partition = partition && owner[s] == -2;
+      owner[s] = static_cast<int>(t);
+    }
+  std::vector<std::size_t> supernode_of_column(view.n);
+  for(std::size_t s = 0; s < ns; ++s)
+    for(int j = view.super[s]; j < view.super[s + 1]; ++j) supernode_of_column[static_cast<std::size_t>(j)] = s;
+  bool subtrees = true, large_top = false;
+  long largest_top = 0;
+  for(std::size_t s = 0; s < ns; ++s)
+  {
+    partition = partition && owner[s] != -2;
+    const int columns = view.super[s + 1] - view.super[s], rows = view.row_start[s + 1] - view.row_start[s];
+    if(owner[s] == -1)
+    {
+      large_top = large_top || SI::supernodal_detail::is_large(rows, columns);
+      largest_top = (std::max)(largest_top, long(rows) * long(columns));
+    }
+    if(rows == columns) continue;
+    const std::size_t parent = supernode_of_column[static_cast<std::size_t>(view.rows[view.row_start[s] + columns])];
+    subtrees = subtrees && (owner[parent] == -1 || owner[parent] == owner[s]);
+  }
+  report.check(partition && subtrees, name + ": " + std::to_string(plan.tasks().size()) + " subtrees and a top of " +
+                                        std::to_string(plan.top().size()) + " supernodes partition the tree");
+  if(g >= 100)
+    report.check(plan.tasks().size() > 1 && large_top, name + ": several tasks (" + std::to_string(plan.tasks().size()) +
+                                                         "), and a top supernode solved in parallel (largest: " +
+                                                         std::to_string(largest_top) + " entries)");
+
+  SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 2);
+  const SI::Complex_dense_matrix X = factored.solve(B.leftCols(1));  // the parallel solve
+  const SI::Complex_dense_matrix X_cholmod = traits.solver().solve(B.leftCols(1));
+  const SI::Complex_sparse_matrix S_full = S;  // both triangles were given
+  report.check((X - X_cholmod).norm() <= 1e-13 * X_cholmod.norm() &&
+                 (S_full * X - B.leftCols(1)).norm() <= 1e-13 * B.leftCols(1).norm(),
+               name + ": the solution of CHOLMOD's solve, residual below 1e-13");
+  const SI::Complex_dense_matrix X2 = factored.solve(B);  // two columns: CHOLMOD's own solve
+  report.check((X2 - traits.solver().solve(B)).norm() == 0., name + ": two right-hand sides go to CHOLMOD's solve");
+#ifdef CGAL_LINKED_WITH_TBB
+  SI::Complex_dense_matrix X_one_thread;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    X_one_thread = factored.solve(B.leftCols(1));
+  }
+  report.check(X_one_thread == X, name + ": the same bits on one thread as on all");
+#endif
+}
+#endif
 
 int main()
 {
@@ -471,6 +620,8 @@ int main()
     typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Cholmod;
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 4, 0.);
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 2, -0.5);
+    check_parallel_supernodal_solve(report, 3);
+    check_parallel_supernodal_solve(report, 200);
 #endif
   }
 

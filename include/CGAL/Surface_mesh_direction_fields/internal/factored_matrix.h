@@ -18,15 +18,18 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/shifted_matrix.h>
 
 #include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/use.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <CGAL/Surface_mesh_direction_fields/internal/supernodal_solve.h>
 #endif
 
 #include <complex>
+#include <memory>
 #include <type_traits>
 #include <utility>
 
@@ -42,7 +45,9 @@
 // BLAS-3 kernels (4 right-hand sides cost about 1.6 single solves); when the
 // sparsity pattern has not changed since the previous factorization, only the
 // numerical factorization is redone (the ordering and symbolic analysis are
-// reused).
+// reused). With CHOLMOD's supernodal LL^* factor, a single right-hand side
+// is solved by the package's own parallel solve on CHOLMOD's factor
+// (supernodal_solve.h): CHOLMOD's solve is sequential.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -186,21 +191,24 @@ bool has_positive_pivots(const EigenSolver&, long)
   return true;
 }
 
-// CHOLMOD reports a matrix that is not positive definite as a warning on
-// stderr; where that is an expected outcome (a trial shift), this silences
-// its warnings (not its errors) for the scope of the object.
+// CHOLMOD reports a matrix that is not positive definite on stderr (as
+// "CHOLMOD error" from print level 1 on, although its status is a warning);
+// where that is an expected outcome (a trial shift), this turns CHOLMOD's
+// printing off for the scope of the object. Nothing is lost: a real failure
+// still shows in the status, the trial returns false, and the fallback
+// factorization runs with the caller's print level.
 template <typename EigenSolver, typename = void>
-struct Cholmod_warnings_off
+struct Cholmod_messages_off
 {
-  explicit Cholmod_warnings_off(EigenSolver&) {}
+  explicit Cholmod_messages_off(EigenSolver&) {}
 };
 template <typename EigenSolver>
-struct Cholmod_warnings_off<EigenSolver, std::void_t<decltype(std::declval<EigenSolver&>().cholmod().print)> >
+struct Cholmod_messages_off<EigenSolver, std::void_t<decltype(std::declval<EigenSolver&>().cholmod().print)> >
 {
   EigenSolver& solver;
   int saved;
-  explicit Cholmod_warnings_off(EigenSolver& s) : solver(s), saved(s.cholmod().print) { solver.cholmod().print = 1; }
-  ~Cholmod_warnings_off() { solver.cholmod().print = saved; }
+  explicit Cholmod_messages_off(EigenSolver& s) : solver(s), saved(s.cholmod().print) { solver.cholmod().print = 0; }
+  ~Cholmod_messages_off() { solver.cholmod().print = saved; }
 };
 
 // CHOLMOD's default analysis orders with AMD and, when AMD's fill is high
@@ -244,6 +252,86 @@ void analyze_with_ordering_for_size(EigenSolver& solver, const Complex_sparse_ma
   solver.analyzePattern(S);
 }
 
+#ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
+// CHOLMOD's factor inside Eigen's CHOLMOD solvers, which do not expose it:
+// a pointer to the protected member, formed in a derived class, is applied
+// to the solver (the standard way to read a protected member; nothing is
+// modified).
+template <typename EigenSolver>
+struct Cholmod_factor_access : EigenSolver
+{
+  static const cholmod_factor* factor(const EigenSolver& solver)
+  {
+    return solver.*(&Cholmod_factor_access::m_cholmodFactor);
+  }
+};
+
+template <typename Matrix, int UpLo, typename Derived>
+std::true_type is_cholmod_solver(const Eigen::CholmodBase<Matrix, UpLo, Derived>*);
+#endif
+std::false_type is_cholmod_solver(...);
+
+// The parallel solve with CHOLMOD's factor, when the solver is one of
+// Eigen's CHOLMOD solvers and its factor is supernodal, complex, LL^*, with
+// int indices (what CholmodSupernodalLLT computes); empty otherwise.
+class Parallel_supernodal_solve
+{
+#ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
+  Supernodal_factor_view<int> m_view;
+  std::unique_ptr<Supernodal_solve_plan> m_plan;
+
+public:
+  // after each factorization; `new_structure`: the analysis was redone
+  template <typename EigenSolver>
+  void update(const EigenSolver& solver, bool new_structure)
+  {
+    if constexpr(decltype(is_cholmod_solver(&solver))::value)
+    {
+      const cholmod_factor* L = Cholmod_factor_access<EigenSolver>::factor(solver);
+      const bool usable = L != nullptr && L->is_super && L->is_ll && L->xtype == CHOLMOD_COMPLEX &&
+                          L->dtype == CHOLMOD_DOUBLE && L->itype == CHOLMOD_INT && L->super != nullptr &&
+                          L->pi != nullptr && L->px != nullptr && L->s != nullptr && L->x != nullptr;
+      if(!usable)
+      {
+        m_plan.reset();
+        return;
+      }
+      m_view.n = L->n;
+      m_view.supernodes = L->nsuper;
+      m_view.super = static_cast<const int*>(L->super);
+      m_view.row_start = static_cast<const int*>(L->pi);
+      m_view.rows = static_cast<const int*>(L->s);
+      m_view.value_start = static_cast<const int*>(L->px);
+      m_view.values = static_cast<const std::complex<double>*>(L->x);  // interleaved (re, im): the same layout
+      m_view.permutation = static_cast<const int*>(L->Perm);
+      if(new_structure || !m_plan)
+      {
+        m_plan = std::make_unique<Supernodal_solve_plan>(m_view);
+        if(!m_plan->valid()) m_plan.reset();
+      }
+    }
+    else
+    {
+      CGAL_USE(solver);
+      CGAL_USE(new_structure);
+    }
+  }
+  void reset() { m_plan.reset(); }
+  bool available() const { return m_plan != nullptr; }
+  Complex_dense_matrix solve(const Complex_dense_matrix& B) const
+  {
+    return supernodal_solve(m_view, *m_plan, Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>(B.col(0)));
+  }
+#else
+public:
+  template <typename EigenSolver>
+  void update(const EigenSolver&, bool) {}
+  void reset() {}
+  bool available() const { return false; }
+  Complex_dense_matrix solve(const Complex_dense_matrix& B) const { return B; }
+#endif
+};
+
 template <typename EigenSolver>
 class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
                       std::enable_if_t<std::is_same<typename EigenSolver::MatrixType, Complex_sparse_matrix>::value> >
@@ -252,9 +340,13 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
   Traits& m_traits;
   bool m_analyzed = false;
 
+  Parallel_supernodal_solve m_parallel_solve;
+  bool m_new_structure = false;
+
   void analyze(const Complex_sparse_matrix& S, bool same_pattern)
   {
-    if(!(same_pattern && m_analyzed))
+    m_new_structure = !(same_pattern && m_analyzed);
+    if(m_new_structure)
       analyze_with_ordering_for_size(m_traits.solver(), S, 0);
     m_analyzed = true;
   }
@@ -276,9 +368,11 @@ public:
   void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
   {
     analyze(S, same_pattern);
+    m_parallel_solve.reset();
     m_traits.solver().factorize(S);
     if(m_traits.solver().info() != Eigen::Success)
       throw Solver_failure_error("the sparse solver could not factor the matrix (not positive definite?)");
+    m_parallel_solve.update(m_traits.solver(), m_new_structure);
   }
 
   // Factors S and returns true, or returns false, without a warning, if the
@@ -288,11 +382,13 @@ public:
   {
     EigenSolver& solver = m_traits.solver();
     analyze(S, same_pattern);
+    m_parallel_solve.reset();
     {
-      Cholmod_warnings_off<EigenSolver> quiet(solver);
+      Cholmod_messages_off<EigenSolver> quiet(solver);
       solver.factorize(S);
     }
     m_analyzed = solver.info() == Eigen::Success && has_positive_pivots(solver, 0);
+    if(m_analyzed) m_parallel_solve.update(solver, m_new_structure);
     return m_analyzed;
   }
 
@@ -311,6 +407,13 @@ public:
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
+    if(B.cols() == 1 && m_parallel_solve.available())
+    {
+      Complex_dense_matrix X = m_parallel_solve.solve(B);
+      if(!X.allFinite())
+        throw Solver_failure_error("the sparse solver failed to solve with its factorization");
+      return X;
+    }
     Complex_dense_matrix X = m_traits.solver().solve(B);
     if(m_traits.solver().info() != Eigen::Success || !X.allFinite())
       throw Solver_failure_error("the sparse solver failed to solve with its factorization");

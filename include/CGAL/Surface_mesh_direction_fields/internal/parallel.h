@@ -59,6 +59,21 @@ void parallel_for_each_index(std::size_t n, const IndexBody& body)
   });
 }
 
+// body(i) for each of a few heavy, independent items i in [0, n) (one
+// item per task, unlike parallel_for_each_index()).
+template <typename IndexBody>
+void parallel_for_each_task(std::size_t n, const IndexBody& body)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
+  if(n > 1)
+  {
+    tbb::parallel_for(std::size_t(0), n, [&body](std::size_t i) { body(i); });
+    return;
+  }
+#endif
+  for(std::size_t i = 0; i < n; ++i) body(i);
+}
+
 // body(begin, end) on the fixed chunks [k g, (k + 1) g) of [0, n), g =
 // `parallel_grain_size`, in parallel: unlike parallel_for_each_range(), the
 // chunks do not depend on the scheduling, so neither does a result computed
