@@ -621,6 +621,21 @@ int main()
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 4, 0.);
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 2, -0.5);
     check_parallel_supernodal_solve(report, 3);
+    {
+      // two one-column supernodes, the second with a row in the first: not a
+      // postordered elimination tree, so no plan (CHOLMOD's solve is used)
+      const int super[] = {0, 1, 2}, row_start[] = {0, 1, 3}, rows[] = {0, 1, 0}, value_start[] = {0, 1, 3};
+      const Complex values[] = {1., 1., 0.5};
+      SI::Supernodal_factor_view<int> view;
+      view.n = 2;
+      view.supernodes = 2;
+      view.super = super;
+      view.row_start = row_start;
+      view.rows = rows;
+      view.value_start = value_start;
+      view.values = values;
+      report.check(!SI::Supernodal_solve_plan(view).valid(), "parallel supernodal solve: a tree not in postorder is refused");
+    }
     check_parallel_supernodal_solve(report, 200);
 #endif
   }

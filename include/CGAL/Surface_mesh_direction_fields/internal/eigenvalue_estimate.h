@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Sparse>
 
@@ -104,7 +105,10 @@ inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
 // aggregates, (P x_c)_i = phase_i x_c[aggregate_i]: a Rayleigh-Ritz (Galerkin)
 // projection, so its smallest eigenvalue bounds lambda_1 from above. Built
 // column by column straight into compressed storage (A and M have the same
-// pattern, so both coarse matrices share one), in one pass over A's entries.
+// pattern, so both coarse matrices share one), in one pass over A's entries;
+// fixed chunks of coarse columns are built in parallel, then copied in
+// place (each column's entries are sorted by row, so the result does not
+// depend on the chunks).
 inline void restrict_to_aggregates(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
                                    const Aggregates& g, Complex_sparse_matrix& Ac, Complex_sparse_matrix& Mc)
 {
@@ -122,52 +126,63 @@ inline void restrict_to_aggregates(const Complex_sparse_matrix& A, const Complex
     Storage_index row;
     Complex a, m;
   };
-  std::vector<Storage_index> outer(static_cast<std::size_t>(nc) + 1, 0);
-  std::vector<Entry> entries;
-  entries.reserve(static_cast<std::size_t>(A.nonZeros() / 3));
-  std::vector<std::size_t> slot(static_cast<std::size_t>(nc), std::size_t(-1));  // of a coarse row in the current column
+  const std::size_t chunks = (static_cast<std::size_t>(nc) + parallel_grain_size - 1) / parallel_grain_size;
+  std::vector<std::vector<Entry> > chunk_entries(chunks);
+  std::vector<Storage_index> column_size(static_cast<std::size_t>(nc), 0);
   const Storage_index* a_outer = A.outerIndexPtr();
   const Storage_index* a_inner = A.innerIndexPtr();
   const Complex* a_value = A.valuePtr();
   const Complex* m_value = M.valuePtr();
-  for(Eigen::Index cj = 0; cj < nc; ++cj)
-  {
-    const std::size_t column_begin = entries.size();
-    for(Eigen::Index k = first[static_cast<std::size_t>(cj)]; k < first[static_cast<std::size_t>(cj) + 1]; ++k)
+  parallel_for_each_chunk(static_cast<std::size_t>(nc), [&](std::size_t begin, std::size_t end) {
+    std::vector<Entry>& entries = chunk_entries[begin / parallel_grain_size];
+    std::vector<std::size_t> slot(static_cast<std::size_t>(nc), std::size_t(-1));  // of a coarse row in the current column
+    for(std::size_t cj = begin; cj < end; ++cj)
     {
-      const Eigen::Index j = members[static_cast<std::size_t>(k)];
-      const Complex pj = g.phase[j];
-      for(Storage_index p = a_outer[j]; p < a_outer[j + 1]; ++p)
+      const std::size_t column_begin = entries.size();
+      for(Eigen::Index k = first[cj]; k < first[cj + 1]; ++k)
       {
-        const Eigen::Index i = a_inner[p];
-        const std::size_t ci = static_cast<std::size_t>(g.of_vertex[static_cast<std::size_t>(i)]);
-        if(slot[ci] == std::size_t(-1))
+        const Eigen::Index j = members[static_cast<std::size_t>(k)];
+        const Complex pj = g.phase[j];
+        for(Storage_index p = a_outer[j]; p < a_outer[j + 1]; ++p)
         {
-          slot[ci] = entries.size();
-          entries.push_back({static_cast<Storage_index>(ci), Complex(0., 0.), Complex(0., 0.)});
+          const Eigen::Index i = a_inner[p];
+          const std::size_t ci = static_cast<std::size_t>(g.of_vertex[static_cast<std::size_t>(i)]);
+          if(slot[ci] == std::size_t(-1))
+          {
+            slot[ci] = entries.size();
+            entries.push_back({static_cast<Storage_index>(ci), Complex(0., 0.), Complex(0., 0.)});
+          }
+          const Complex weight = std::conj(g.phase[i]) * pj;
+          entries[slot[ci]].a += weight * a_value[p];
+          entries[slot[ci]].m += weight * m_value[p];
         }
-        const Complex weight = std::conj(g.phase[i]) * pj;
-        entries[slot[ci]].a += weight * a_value[p];
-        entries[slot[ci]].m += weight * m_value[p];
       }
+      std::sort(entries.begin() + static_cast<std::ptrdiff_t>(column_begin), entries.end(),
+                [](const Entry& x, const Entry& y) { return x.row < y.row; });
+      for(std::size_t e = column_begin; e < entries.size(); ++e) slot[static_cast<std::size_t>(entries[e].row)] = std::size_t(-1);
+      column_size[cj] = static_cast<Storage_index>(entries.size() - column_begin);
     }
-    std::sort(entries.begin() + static_cast<std::ptrdiff_t>(column_begin), entries.end(),
-              [](const Entry& x, const Entry& y) { return x.row < y.row; });
-    for(std::size_t e = column_begin; e < entries.size(); ++e) slot[static_cast<std::size_t>(entries[e].row)] = std::size_t(-1);
-    outer[static_cast<std::size_t>(cj) + 1] = static_cast<Storage_index>(entries.size());
-  }
+  });
+  std::vector<std::size_t> chunk_offset(chunks + 1, 0);
+  for(std::size_t c = 0; c < chunks; ++c) chunk_offset[c + 1] = chunk_offset[c] + chunk_entries[c].size();
+  const std::size_t nnz = chunk_offset[chunks];
   for(Complex_sparse_matrix* C : {&Ac, &Mc})
   {
     C->resize(nc, nc);
-    C->resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
-    std::copy(outer.begin(), outer.end(), C->outerIndexPtr());
-    for(std::size_t e = 0; e < entries.size(); ++e) C->innerIndexPtr()[e] = entries[e].row;
+    C->resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    Storage_index* outer = C->outerIndexPtr();
+    outer[0] = 0;
+    for(std::size_t cj = 0; cj < static_cast<std::size_t>(nc); ++cj) outer[cj + 1] = outer[cj] + column_size[cj];
   }
-  for(std::size_t e = 0; e < entries.size(); ++e)
-  {
-    Ac.valuePtr()[e] = entries[e].a;
-    Mc.valuePtr()[e] = entries[e].m;
-  }
+  parallel_for_each_task(chunks, [&](std::size_t c) {
+    const std::vector<Entry>& entries = chunk_entries[c];
+    for(std::size_t e = 0, p = chunk_offset[c]; e < entries.size(); ++e, ++p)
+    {
+      Ac.innerIndexPtr()[p] = Mc.innerIndexPtr()[p] = entries[e].row;
+      Ac.valuePtr()[p] = entries[e].a;
+      Mc.valuePtr()[p] = entries[e].m;
+    }
+  });
 }
 
 inline Complex_vector prolongate(const Complex_vector& xc, const Aggregates& g)

@@ -64,7 +64,11 @@ struct Supernodal_factor_view
   const Index* permutation = nullptr;  // row k of P A P^T is row permutation[k] of A (null: identity)
 };
 
-// The cut of the tree, computed once per symbolic structure.
+// The cut of the tree, computed once per symbolic structure: subtrees of at
+// most 1 / `task_budget` of the factor's entries each, the rest is the top.
+// The budget is fixed, not taken from the number of threads, because the cut
+// decides the order of the additions: with a fixed cut the solution is the
+// same bit for bit on every machine.
 class Supernodal_solve_plan
 {
 public:
@@ -74,69 +78,13 @@ public:
   };
 
   template <typename Index>
-  explicit Supernodal_solve_plan(const Supernodal_factor_view<Index>& L, std::size_t tasks_per_thread_budget = 16)
+  explicit Supernodal_solve_plan(const Supernodal_factor_view<Index>& L, std::size_t task_budget = 16)
   {
-    const std::size_t ns = L.supernodes;
-    std::vector<std::size_t> supernode_of_column(L.n);
-    for(std::size_t s = 0; s < ns; ++s)
-      for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
-        supernode_of_column[j] = s;
-    // parent: the supernode of the first row below the diagonal block
-    const std::size_t none = std::size_t(-1);
-    std::vector<std::size_t> parent(ns, none), first_descendant(ns);
-    std::vector<double> subtree_work(ns);
-    for(std::size_t s = 0; s < ns; ++s)
-    {
-      const std::size_t columns = static_cast<std::size_t>(L.super[s + 1] - L.super[s]);
-      const std::size_t rows = static_cast<std::size_t>(L.row_start[s + 1] - L.row_start[s]);
-      if(rows > columns)
-        parent[s] = supernode_of_column[static_cast<std::size_t>(L.rows[L.row_start[s] + static_cast<Index>(columns)])];
-      first_descendant[s] = s;
-      subtree_work[s] = static_cast<double>(rows) * static_cast<double>(columns);
-    }
-    m_valid = true;
-    for(std::size_t s = 0; s < ns; ++s)  // postorder: children before their parent
-    {
-      if(parent[s] == none) continue;
-      if(parent[s] <= s) { m_valid = false; return; }
-      subtree_work[parent[s]] += subtree_work[s];
-      first_descendant[parent[s]] = (std::min)(first_descendant[parent[s]], first_descendant[s]);
-    }
-    std::vector<std::vector<std::size_t> > children(ns);
-    double total = 0.;
-    std::vector<std::size_t> candidates;
-    for(std::size_t s = 0; s < ns; ++s)
-    {
-      if(parent[s] == none) { candidates.push_back(s); total += subtree_work[s]; }
-      else children[parent[s]].push_back(s);
-    }
-    // Split the heaviest subtree until every one is at most total / budget:
-    // its root joins the top, its children become subtrees.
-    const double largest_task = total / static_cast<double>(tasks_per_thread_budget);
-    auto lighter = [&](std::size_t a, std::size_t b) { return subtree_work[a] < subtree_work[b]; };
-    std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(lighter)> heap(lighter, candidates);
-    std::vector<unsigned char> in_top(ns, 0);
-    std::vector<std::size_t> roots;
-    while(!heap.empty())
-    {
-      const std::size_t s = heap.top();
-      heap.pop();
-      if(subtree_work[s] <= largest_task) { roots.push_back(s); continue; }
-      in_top[s] = 1;
-      for(std::size_t c : children[s]) heap.push(c);
-    }
-    std::sort(roots.begin(), roots.end());
-    for(std::size_t r : roots) m_tasks.push_back({first_descendant[r], r});
-    for(std::size_t s = 0; s < ns; ++s)
-      if(in_top[s]) m_top.push_back(s);
-    // the top's columns, numbered for the tasks' buffers
-    m_top_position.assign(L.n, -1);
-    for(std::size_t s : m_top)
-      for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
-        m_top_position[j] = static_cast<std::int32_t>(m_top_columns.size()), m_top_columns.push_back(j);
-    for(std::size_t s : m_top) m_top_work += static_cast<double>(L.row_start[s + 1] - L.row_start[s]) *
-                                              static_cast<double>(L.super[s + 1] - L.super[s]);
-    m_total_work = total;
+    const Tree tree = read_tree(L);
+    m_valid = tree.postordered;
+    if(!m_valid) return;
+    cut(L, tree, task_budget);
+    m_valid = tasks_touch_only_the_top(L);
   }
 
   bool valid() const { return m_valid; }
@@ -144,15 +92,131 @@ public:
   const std::vector<std::size_t>& top() const { return m_top; }
   const std::vector<std::size_t>& top_columns() const { return m_top_columns; }
   std::int32_t top_position(std::size_t column) const { return m_top_position[column]; }
-  double top_work_fraction() const { return m_total_work > 0. ? m_top_work / m_total_work : 0.; }
 
 private:
+  static constexpr std::size_t none = std::size_t(-1);
+
+  struct Tree
+  {
+    std::vector<std::size_t> parent, first_descendant;
+    std::vector<double> subtree_work;  // entries of the factor in the subtree
+    bool postordered = true;
+  };
+
+  // The supernodal elimination tree: the parent of a supernode holds the
+  // first row below its diagonal block.
+  template <typename Index>
+  static Tree read_tree(const Supernodal_factor_view<Index>& L)
+  {
+    const std::size_t ns = L.supernodes;
+    std::vector<std::size_t> supernode_of_column(L.n);
+    for(std::size_t s = 0; s < ns; ++s)
+      for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
+        supernode_of_column[j] = s;
+    Tree tree;
+    tree.parent.assign(ns, none);
+    tree.first_descendant.resize(ns);
+    tree.subtree_work.resize(ns);
+    for(std::size_t s = 0; s < ns; ++s)
+    {
+      const Index columns = L.super[s + 1] - L.super[s], rows = L.row_start[s + 1] - L.row_start[s];
+      if(rows > columns)
+        tree.parent[s] = supernode_of_column[static_cast<std::size_t>(L.rows[L.row_start[s] + columns])];
+      tree.first_descendant[s] = s;
+      tree.subtree_work[s] = static_cast<double>(rows) * static_cast<double>(columns);
+    }
+    for(std::size_t s = 0; s < ns; ++s)  // postorder: children before their parent
+    {
+      const std::size_t p = tree.parent[s];
+      if(p == none) continue;
+      if(p <= s)
+      {
+        tree.postordered = false;
+        break;
+      }
+      tree.subtree_work[p] += tree.subtree_work[s];
+      tree.first_descendant[p] = (std::min)(tree.first_descendant[p], tree.first_descendant[s]);
+    }
+    return tree;
+  }
+
+  // Splits the heaviest subtree until each is at most 1 / budget of the
+  // whole: the root of a split subtree joins the top, its children become
+  // subtrees.
+  template <typename Index>
+  void cut(const Supernodal_factor_view<Index>& L, const Tree& tree, std::size_t task_budget)
+  {
+    const std::size_t ns = L.supernodes;
+    std::vector<std::vector<std::size_t> > children(ns);
+    std::vector<std::size_t> roots;
+    double total = 0.;
+    for(std::size_t s = 0; s < ns; ++s)
+    {
+      if(tree.parent[s] == none)
+      {
+        roots.push_back(s);
+        total += tree.subtree_work[s];
+      }
+      else
+        children[tree.parent[s]].push_back(s);
+    }
+    const double largest_task = total / static_cast<double>(task_budget);
+    auto lighter = [&tree](std::size_t a, std::size_t b) { return tree.subtree_work[a] < tree.subtree_work[b]; };
+    std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(lighter)> heap(lighter, roots);
+    std::vector<unsigned char> in_top(ns, 0);
+    std::vector<std::size_t> task_roots;
+    while(!heap.empty())
+    {
+      const std::size_t s = heap.top();
+      heap.pop();
+      if(tree.subtree_work[s] <= largest_task)
+        task_roots.push_back(s);
+      else
+      {
+        in_top[s] = 1;
+        for(std::size_t c : children[s]) heap.push(c);
+      }
+    }
+    std::sort(task_roots.begin(), task_roots.end());
+    for(std::size_t r : task_roots) m_tasks.push_back({tree.first_descendant[r], r});
+    for(std::size_t s = 0; s < ns; ++s)
+      if(in_top[s]) m_top.push_back(s);
+    // the top's columns, numbered for the tasks' buffers
+    m_top_position.assign(L.n, -1);
+    for(std::size_t s : m_top)
+      for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
+      {
+        m_top_position[j] = static_cast<std::int32_t>(m_top_columns.size());
+        m_top_columns.push_back(j);
+      }
+  }
+
+  // What the solve relies on: every row below a task's supernode is a column
+  // of that task or of the top (true of an elimination tree, whose
+  // off-diagonal rows are ancestors; checked, since the tree was read from
+  // the first of them only).
+  template <typename Index>
+  bool tasks_touch_only_the_top(const Supernodal_factor_view<Index>& L) const
+  {
+    for(const Task& task : m_tasks)
+    {
+      const Index first_column = L.super[task.first], end_column = L.super[task.last + 1];
+      for(std::size_t s = task.first; s <= task.last; ++s)
+        for(Index p = L.row_start[s] + (L.super[s + 1] - L.super[s]); p < L.row_start[s + 1]; ++p)
+        {
+          const Index row = L.rows[p];
+          if((row < first_column || row >= end_column) && m_top_position[static_cast<std::size_t>(row)] < 0)
+            return false;
+        }
+    }
+    return true;
+  }
+
   bool m_valid = false;
   std::vector<Task> m_tasks;
   std::vector<std::size_t> m_top;          // supernodes of the top, increasing
   std::vector<std::size_t> m_top_columns;  // their columns
   std::vector<std::int32_t> m_top_position;
-  double m_top_work = 0., m_total_work = 0.;
 };
 
 namespace supernodal_detail {
