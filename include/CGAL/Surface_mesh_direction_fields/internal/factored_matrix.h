@@ -278,7 +278,8 @@ class Parallel_supernodal_solve
 {
 #ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
   Supernodal_factor_view<int> m_view;
-  std::unique_ptr<Supernodal_solve_plan> m_plan;
+  std::unique_ptr<Supernodal_solve_plan> m_plan;  // kept while the analysis is
+  bool m_ready = false;                           // the factor is there, the plan fits it
 
 public:
   // after each factorization; `new_structure`: the analysis was redone
@@ -291,6 +292,7 @@ public:
       const bool usable = L != nullptr && L->is_super && L->is_ll && L->xtype == CHOLMOD_COMPLEX &&
                           L->dtype == CHOLMOD_DOUBLE && L->itype == CHOLMOD_INT && L->super != nullptr &&
                           L->pi != nullptr && L->px != nullptr && L->s != nullptr && L->x != nullptr;
+      m_ready = false;
       if(!usable)
       {
         m_plan.reset();
@@ -305,10 +307,8 @@ public:
       m_view.values = static_cast<const std::complex<double>*>(L->x);  // interleaved (re, im): the same layout
       m_view.permutation = static_cast<const int*>(L->Perm);
       if(new_structure || !m_plan)
-      {
         m_plan = std::make_unique<Supernodal_solve_plan>(m_view);
-        if(!m_plan->valid()) m_plan.reset();
-      }
+      m_ready = m_plan->valid();
     }
     else
     {
@@ -316,8 +316,8 @@ public:
       CGAL_USE(new_structure);
     }
   }
-  void reset() { m_plan.reset(); }
-  bool available() const { return m_plan != nullptr; }
+  void reset() { m_ready = false; }  // before a factorization
+  bool available() const { return m_ready; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
     return supernodal_solve(m_view, *m_plan, Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>(B.col(0)));
