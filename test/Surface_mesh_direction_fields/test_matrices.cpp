@@ -581,8 +581,17 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
                                                          "), and a top supernode solved in parallel (largest: " +
                                                          std::to_string(largest_top) + " entries)");
 
+  const bool large = L->xsize >= SI::parallel_solve_minimum_entries;
+  report.check(factored.solves_in_parallel() == large,
+               name + ": the parallel solve is used exactly for factors of a million entries or more (" +
+                 std::to_string(L->xsize) + ")");
+  if(g >= 100) report.check(large, name + ": the factor is large enough for the parallel solve");
+
   SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 2);
-  const SI::Complex_dense_matrix X = factored.solve(B.leftCols(1));  // the parallel solve
+  auto parallel_solve = [&] { return SI::Complex_dense_matrix(SI::supernodal_solve(view, plan, SI::Complex_vector(B.col(0)))); };
+  const SI::Complex_dense_matrix X = parallel_solve();
+  if(large)
+    report.check(factored.solve(B.leftCols(1)) == X, name + ": the factored matrix solves with the same plan");
   const SI::Complex_dense_matrix X_cholmod = traits.solver().solve(B.leftCols(1));
   const SI::Complex_sparse_matrix S_full = S;  // both triangles were given
   report.check((X - X_cholmod).norm() <= 1e-13 * X_cholmod.norm() &&
@@ -594,7 +603,7 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   SI::Complex_dense_matrix X_one_thread;
   {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    X_one_thread = factored.solve(B.leftCols(1));
+    X_one_thread = parallel_solve();
   }
   report.check(X_one_thread == X, name + ": the same bits on one thread as on all");
 #endif
