@@ -37,7 +37,8 @@
 // ancestors) and independent subtrees ("tasks") of bounded work; each task
 // collects its updates of top unknowns in its own buffer, the buffers are
 // added in task order (so the result does not depend on the scheduling),
-// and the top is solved sequentially. The backward solve reads only
+// then the top is solved supernode after supernode, its large supernodes
+// split over the threads in fixed chunks. The backward solve reads only
 // ancestors, so it needs no buffer: top first, then the tasks in parallel.
 //
 // The factor is described by plain arrays (as in `cholmod_factor`):
