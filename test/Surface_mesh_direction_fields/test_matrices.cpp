@@ -534,15 +534,7 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   report.check(L != nullptr && L->is_super && L->is_ll, name + ": CHOLMOD's factor is supernodal LL^*");
   if(L == nullptr || !L->is_super) return;
 
-  SI::Supernodal_factor_view<int> view;
-  view.n = L->n;
-  view.supernodes = L->nsuper;
-  view.super = static_cast<const int*>(L->super);
-  view.row_start = static_cast<const int*>(L->pi);
-  view.rows = static_cast<const int*>(L->s);
-  view.value_start = static_cast<const int*>(L->px);
-  view.values = static_cast<const std::complex<double>*>(L->x);
-  view.permutation = static_cast<const int*>(L->Perm);
+  const SI::Supernodal_factor_view<int> view = SI::supernodal_view(*L);
   const SI::Supernodal_solve_plan plan(view);
   // every supernode in the top or in exactly one task; a supernode's parent
   // is in its task or in the top; the top's parents are in the top

@@ -266,6 +266,21 @@ struct Cholmod_factor_access : EigenSolver
   }
 };
 
+// The arrays of a supernodal complex factor with int indices.
+inline Supernodal_factor_view<int> supernodal_view(const cholmod_factor& L)
+{
+  Supernodal_factor_view<int> view;
+  view.n = L.n;
+  view.supernodes = L.nsuper;
+  view.super = static_cast<const int*>(L.super);
+  view.row_start = static_cast<const int*>(L.pi);
+  view.rows = static_cast<const int*>(L.s);
+  view.value_start = static_cast<const int*>(L.px);
+  view.values = static_cast<const std::complex<double>*>(L.x);  // interleaved (re, im): the same layout
+  view.permutation = static_cast<const int*>(L.Perm);
+  return view;
+}
+
 template <typename Matrix, int UpLo, typename Derived>
 std::true_type is_cholmod_solver(const Eigen::CholmodBase<Matrix, UpLo, Derived>*);
 #endif
@@ -305,14 +320,7 @@ public:
         m_plan.reset();
         return;
       }
-      m_view.n = L->n;
-      m_view.supernodes = L->nsuper;
-      m_view.super = static_cast<const int*>(L->super);
-      m_view.row_start = static_cast<const int*>(L->pi);
-      m_view.rows = static_cast<const int*>(L->s);
-      m_view.value_start = static_cast<const int*>(L->px);
-      m_view.values = static_cast<const std::complex<double>*>(L->x);  // interleaved (re, im): the same layout
-      m_view.permutation = static_cast<const int*>(L->Perm);
+      m_view = supernodal_view(*L);
       if(new_structure || !m_plan)
         m_plan = std::make_unique<Supernodal_solve_plan>(m_view);
       m_ready = m_plan->valid();

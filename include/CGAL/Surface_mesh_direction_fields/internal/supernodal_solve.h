@@ -234,6 +234,24 @@ Block supernode_block(const Supernodal_factor_view<Index>& L, std::size_t s)
   return Block(L.values + L.value_start[s], rows, columns);
 }
 
+// The rows below supernode s's diagonal block: y at them, into scratch; and
+// each scratch value, with its row, to subtract(row, value).
+template <typename Index>
+void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Vector& y, Vector& scratch)
+{
+  const Index columns = L.super[s + 1] - L.super[s];
+  const Index* rows = L.rows + L.row_start[s] + columns;
+  scratch.resize(L.row_start[s + 1] - L.row_start[s] - columns);
+  for(Eigen::Index i = 0; i < scratch.size(); ++i) scratch[i] = y[static_cast<Eigen::Index>(rows[i])];
+}
+
+template <typename Index, typename Subtract>
+void scatter_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Vector& scratch, const Subtract& subtract)
+{
+  const Index* rows = L.rows + L.row_start[s] + (L.super[s + 1] - L.super[s]);
+  for(Eigen::Index i = 0; i < scratch.size(); ++i) subtract(static_cast<std::size_t>(rows[i]), scratch[i]);
+}
+
 // Forward step of supernode s on y: solves its diagonal block, then gives
 // each row r below it, with the product of that row and the solved part, to
 // subtract(r, value).
@@ -248,8 +266,7 @@ void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Ve
   if(below == 0) return;
   scratch.resize(below);
   scratch.noalias() = block.bottomRows(below) * ys;
-  const Index* rows = L.rows + L.row_start[s] + columns;
-  for(Eigen::Index i = 0; i < below; ++i) subtract(static_cast<std::size_t>(rows[i]), scratch[i]);
+  scatter_below(L, s, scratch, subtract);
 }
 
 // Backward step: y_s <- L_ss^{-*} (y_s - L_below^* y_below).
@@ -261,9 +278,7 @@ void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, V
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   if(below > 0)
   {
-    scratch.resize(below);
-    const Index* rows = L.rows + L.row_start[s] + columns;
-    for(Eigen::Index i = 0; i < below; ++i) scratch[i] = y[static_cast<Eigen::Index>(rows[i])];
+    gather_below(L, s, y, scratch);
     ys.noalias() -= block.bottomRows(below).adjoint() * scratch;
   }
   block.topRows(columns).template triangularView<Eigen::Lower>().adjoint().solveInPlace(ys);
@@ -311,8 +326,7 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::
       }
     });
   }
-  const Index* row_index = L.rows + L.row_start[s] + columns;
-  for(Eigen::Index i = 0; i < below; ++i) subtract(static_cast<std::size_t>(row_index[i]), scratch[i]);
+  scatter_below(L, s, scratch, subtract);
 }
 
 template <typename Index>
@@ -323,9 +337,7 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std:
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   if(below > 0)
   {
-    scratch.resize(below);
-    const Index* row_index = L.rows + L.row_start[s] + columns;
-    for(Eigen::Index i = 0; i < below; ++i) scratch[i] = y[static_cast<Eigen::Index>(row_index[i])];
+    gather_below(L, s, y, scratch);
     for_each_chunk_of(0, columns, (std::max)(Eigen::Index(1), chunk_entries / below), [&](Eigen::Index a, Eigen::Index b) {
       ys.segment(a, b - a).noalias() -= block.bottomRows(below).middleCols(a, b - a).adjoint() * scratch;
     });
