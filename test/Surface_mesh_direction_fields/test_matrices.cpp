@@ -34,6 +34,10 @@
 #endif
 
 #include <cmath>
+#include <sstream>
+#include <memory>
+#include <fstream>
+#include <cstdint>
 #include <complex>
 #include <iostream>
 #include <string>
@@ -613,9 +617,55 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
 }
 #endif
 
+
+// The VmFlags of the mapping of /proc/self/smaps that holds address a ("" if
+// not found or /proc is not there).
+static std::string vm_flags_of(const void* a)
+{
+  std::ifstream smaps("/proc/self/smaps");
+  const auto address = reinterpret_cast<std::uintptr_t>(a);
+  std::string line;
+  bool inside = false;
+  while(std::getline(smaps, line))
+  {
+    unsigned long long begin = 0, end = 0;
+    char dash = 0;
+    std::istringstream header(line);
+    if(header >> std::hex >> begin >> dash >> end && dash == '-')
+      inside = begin <= address && address < end;
+    else if(inside && line.compare(0, 8, "VmFlags:") == 0)
+      return line + " ";
+  }
+  return "";
+}
+
+// advise_huge_pages(): the advice reaches the kernel for the whole pages of
+// the range (the mapping is marked "hg"), a buffer written after it reads back
+// unchanged, and sizes below the minimum, null or unaligned pointers are fine.
+static void check_huge_page_advice(Test_report& report)
+{
+  const std::size_t bytes = std::size_t(16) << 20;
+  std::unique_ptr<unsigned char[]> buffer(new unsigned char[bytes]);  // not written yet
+  SI::advise_huge_pages(buffer.get() + 1, bytes - 1);
+  SI::advise_huge_pages(nullptr, bytes);
+  SI::advise_huge_pages(buffer.get(), SI::huge_page_advice_minimum_bytes - 1);
+  for(std::size_t i = 0; i < bytes; ++i) buffer[i] = static_cast<unsigned char>(i * 7);
+  bool same = true;
+  for(std::size_t i = 0; i < bytes; ++i) same = same && buffer[i] == static_cast<unsigned char>(i * 7);
+  report.check(same, "huge page advice: the buffer reads back what was written");
+#if defined(__linux__) && defined(MADV_HUGEPAGE) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_NO_HUGE_PAGES)
+  const std::string flags = vm_flags_of(buffer.get() + bytes / 2);
+  if(flags.empty())
+    std::cout << "SKIP huge page advice: /proc/self/smaps not readable\n";
+  else
+    report.check(flags.find(" hg ") != std::string::npos, "huge page advice: the kernel marked the range (" + flags + ")");
+#endif
+}
+
 int main()
 {
   Test_report report("matrices");
+  check_huge_page_advice(report);
 
   {
     Mesh lumpy;

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/eigenvalue_estimate.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Dense>
@@ -307,7 +308,8 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
     (std::max)((std::max)(Eigen::Index(3), options.restart_size + 2) * block, (std::min)(options.basis_size, n));
 
   // basis: the first `k` columns of V (allocated once)
-  Complex_dense_matrix V(n, basis_size + 2 * block);
+  Complex_dense_matrix V(n, basis_size + 2 * block);  // not initialized: written column by column
+  advise_huge_pages(V.data(), static_cast<std::size_t>(V.size()) * sizeof(Complex));
   Eigen::Index k = 0;
   Complex_dense_matrix H(0, 0), G(0, 0);  // V^* A V and V^* M V
   Complex_dense_matrix AQ, MQ;
