@@ -39,15 +39,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <cstdlib>
-#include <cstring>
-#include <unistd.h>
+#include <unistd.h>  // execv: the rerun with malloc's huge pages
 
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;

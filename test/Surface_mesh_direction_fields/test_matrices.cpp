@@ -728,6 +728,39 @@ int main()
                    (VC - VC_ref).norm() <= 1e-14 * VC_ref.norm() && (W - W_ref).norm() <= 1e-14 * W_ref.norm() &&
                    SI::adjoint_product(V, X) == VX,
                  "basis products V^* X, V^* Y, V C and W - V C equal Eigen's");
+
+    // the weighted products of the orthonormalization, and the orthonormalization
+    // itself for one column (in place, in parallel) and for two (column by column)
+    const Eigen::VectorXd d = Eigen::VectorXd::Random(rows).cwiseAbs() + Eigen::VectorXd::Constant(rows, 0.1);
+    const SI::Complex_dense_matrix VDX_ref = V.adjoint() * d.asDiagonal() * X;
+    Eigen::VectorXd norms_ref(2);
+    for(Eigen::Index j = 0; j < 2; ++j) norms_ref[j] = std::sqrt(X.col(j).cwiseAbs2().dot(d));
+    report.check((SI::weighted_adjoint_product(V, d, X) - VDX_ref).norm() <= 1e-13 * VDX_ref.norm() &&
+                   (SI::weighted_column_norms(d, X) - norms_ref).norm() <= 1e-14 * norms_ref.norm(),
+                 "weighted basis products V^* diag(d) X and column norms equal Eigen's");
+    SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(rows, 3);  // a d-orthonormal basis
+    B.col(0) /= std::sqrt(B.col(0).cwiseAbs2().dot(d));
+    for(Eigen::Index j = 1; j < 3; ++j)
+    {
+      for(int pass = 0; pass < 2; ++pass)
+        B.col(j) -= B.leftCols(j) * (B.leftCols(j).adjoint() * d.asDiagonal() * B.col(j));
+      B.col(j) /= std::sqrt(B.col(j).cwiseAbs2().dot(d));
+    }
+    for(Eigen::Index columns : {1, 2})
+    {
+      const SI::Complex_dense_matrix Q = SI::d_orthonormalize(d, B, X.leftCols(columns));
+      const SI::Complex_dense_matrix gram = Q.adjoint() * d.asDiagonal() * Q, against = B.adjoint() * d.asDiagonal() * Q;
+      const SI::Complex_dense_matrix span_error =  // X's columns lie in span(B, Q)
+        X.leftCols(columns) - B * (B.adjoint() * d.asDiagonal() * X.leftCols(columns)) -
+        Q * (Q.adjoint() * d.asDiagonal() * X.leftCols(columns));
+      report.check(Q.cols() == columns &&
+                     (gram - SI::Complex_dense_matrix::Identity(columns, columns)).norm() <= 1e-13 &&
+                     against.norm() <= 1e-13 && span_error.norm() <= 1e-12 * X.leftCols(columns).norm(),
+                   "d-orthonormalization of " + std::to_string(columns) +
+                     " column(s) against a basis: orthonormal, orthogonal to it, same span");
+    }
+    report.check(SI::d_orthonormalize(d, B, B.col(1)).cols() == 0,
+                 "d-orthonormalization drops a column inside the span of the basis");
   }
 
   Mesh sphere, torus, disk;

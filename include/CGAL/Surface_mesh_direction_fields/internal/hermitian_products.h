@@ -135,6 +135,41 @@ inline Complex_dense_matrix adjoint_product(const Eigen::Ref<const Complex_dense
   return VX;
 }
 
+// V^* diag(d) W for tall V, W with the same rows and a weight per row, by
+// fixed chunks of rows (no weighted copy of W).
+inline Complex_dense_matrix weighted_adjoint_product(const Eigen::Ref<const Complex_dense_matrix>& V,
+                                                     const Eigen::VectorXd& d,
+                                                     const Eigen::Ref<const Complex_dense_matrix>& W)
+{
+  const Eigen::Index k = V.cols(), p = W.cols();
+  return parallel_reduce_in_order(
+    static_cast<std::size_t>(V.rows()), Complex_dense_matrix(Complex_dense_matrix::Zero(k, p)),
+    [&](std::size_t begin, std::size_t end) {
+      const auto rows = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+      Complex_dense_matrix part(k, p);
+      part.noalias() = V.middleRows(first, rows).adjoint() * (d.segment(first, rows).asDiagonal() * W.middleRows(first, rows));
+      return part;
+    },
+    [](const Complex_dense_matrix& a, const Complex_dense_matrix& b) { return Complex_dense_matrix(a + b); });
+}
+
+// The norms sqrt(w^* diag(d) w) of the columns w of W, by fixed chunks of rows.
+inline Eigen::VectorXd weighted_column_norms(const Eigen::VectorXd& d, const Eigen::Ref<const Complex_dense_matrix>& W)
+{
+  const Eigen::Index p = W.cols();
+  const Eigen::VectorXd squares = parallel_reduce_in_order(
+    static_cast<std::size_t>(W.rows()), Eigen::VectorXd(Eigen::VectorXd::Zero(p)),
+    [&](std::size_t begin, std::size_t end) {
+      const auto rows = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+      Eigen::VectorXd part(p);
+      for(Eigen::Index j = 0; j < p; ++j)
+        part[j] = W.col(j).segment(first, rows).cwiseAbs2().dot(d.segment(first, rows));
+      return part;
+    },
+    [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return Eigen::VectorXd(a + b); });
+  return squares.cwiseSqrt();
+}
+
 // out = V C, or out -= V C if `subtract`, for tall V and small C, by fixed
 // chunks of rows.
 inline void combine_columns(const Eigen::Ref<const Complex_dense_matrix>& V, const Complex_dense_matrix& C,

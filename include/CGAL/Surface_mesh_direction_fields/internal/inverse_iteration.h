@@ -145,21 +145,30 @@ inline double m_norm(const Complex_sparse_matrix& M, const Complex_vector& x)
 template <typename Basis>
 Complex_dense_matrix d_orthonormalize(const Eigen::VectorXd& d, const Basis& V, Complex_dense_matrix W)
 {
-  auto d_norm = [&d](const Complex_vector& w) { return std::sqrt(w.cwiseAbs2().dot(d)); };
-  Eigen::VectorXd norm_before(W.cols());
-  for(Eigen::Index j = 0; j < W.cols(); ++j) norm_before[j] = d_norm(W.col(j));
+  const Eigen::VectorXd norm_before = weighted_column_norms(d, W);
+  Eigen::VectorXd norm = norm_before;
   // A second pass only when the first one removed most of W (the test of
   // Daniel, Gragg, Kaufman and Stewart): otherwise W is already orthogonal to
   // working accuracy, and each pass reads the whole basis twice.
   for(int pass = 0; pass < 2 && V.cols() > 0; ++pass)
   {
-    const Complex_dense_matrix DW = d.asDiagonal() * W;
-    combine_columns(V, adjoint_product(V, DW), W, true);
+    combine_columns(V, weighted_adjoint_product(V, d, W), W, true);
+    norm = weighted_column_norms(d, W);
     bool accurate = true;
-    for(Eigen::Index j = 0; j < W.cols(); ++j)
-      accurate = accurate && d_norm(W.col(j)) > 0.5 * norm_before[j];
+    for(Eigen::Index j = 0; j < W.cols(); ++j) accurate = accurate && norm[j] > 0.5 * norm_before[j];
     if(accurate) break;
   }
+  auto large_enough = [&](double norm_j, Eigen::Index j) { return norm_j > 1e-10 * norm_before[j] && std::isfinite(norm_j); };
+  if(W.cols() == 1)
+  {
+    // one vector (the default block size): normalized in place, in parallel
+    if(!large_enough(norm[0], 0)) return Complex_dense_matrix(W.rows(), 0);
+    parallel_for_each_chunk(static_cast<std::size_t>(W.rows()), [&](std::size_t begin, std::size_t end) {
+      W.col(0).segment(static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end - begin)) /= norm[0];
+    });
+    return W;
+  }
+  auto d_norm = [&d](const auto& w) { return std::sqrt(w.cwiseAbs2().dot(d)); };
   Eigen::Index kept = 0;
   for(Eigen::Index j = 0; j < W.cols(); ++j)
   {
@@ -169,9 +178,9 @@ Complex_dense_matrix d_orthonormalize(const Eigen::VectorXd& d, const Basis& V, 
       const Complex_vector Dw = d.asDiagonal() * w;
       for(Eigen::Index i = 0; i < kept; ++i) w -= W.col(i) * W.col(i).dot(Dw);
     }
-    const double norm = d_norm(w);
-    if(norm > 1e-10 * norm_before[j] && std::isfinite(norm))
-      W.col(kept++) = w / norm;
+    const double norm_j = d_norm(w);
+    if(large_enough(norm_j, j))
+      W.col(kept++) = w / norm_j;
   }
   return W.leftCols(kept);
 }
