@@ -28,8 +28,9 @@
 // reporting) a fault costs about 11 us, 2.8 ms per MB: at 400,000 faces the
 // page faults of the 58 MB of local matrices took more time than computing
 // them. A 2 MB huge page costs one fault. Linux grants huge pages to a range
-// advised with MADV_HUGEPAGE when the system setting is `madvise` (Debian's
-// default) or `always`; elsewhere, or with
+// advised with MADV_HUGEPAGE when the system setting
+// (/sys/kernel/mm/transparent_hugepage/enabled) is `madvise`, as on the
+// machines measured, or `always`; elsewhere, or with
 // CGAL_SURFACE_MESH_DIRECTION_FIELDS_NO_HUGE_PAGES defined, this does nothing.
 // The advice must come before the buffer is first written. It covers only
 // the package's own buffers: the whole process (Eigen, CHOLMOD) gets huge
