@@ -38,6 +38,7 @@
 #include <memory>
 #include <fstream>
 #include <cstdint>
+#include <cstring>
 #include <complex>
 #include <iostream>
 #include <string>
@@ -355,6 +356,35 @@ static void check_index_sum_with_zero_coefficients(Test_report& report, const Me
     report.check(sum == 2 * n, "index sum n chi with " + std::to_string(zeros) + " zero coefficients, n = " +
                                  std::to_string(n) + " (got " + std::to_string(sum) + ")");
   }
+}
+
+// The angle reduction of the index computation: odd bit for bit (so the
+// rotations of the two sides of an edge cancel exactly), congruent to its
+// argument modulo 2 pi, and in [-pi, pi] up to rounding, also next to the
+// half turns and for large arguments.
+static void check_angle_reduction(Test_report& report)
+{
+  const double pi = CGAL_PI, two_pi = 2. * CGAL_PI;
+  std::vector<double> xs = {0., 1e-300, 0.5, pi, 3. * pi, 5. * pi, 1e3, 1e20, 1e300};
+  for(double x : {pi, 3. * pi})
+    for(double y = x, below = x; below > x - 1e-13; below = std::nextafter(below, 0.), y = std::nextafter(y, 10.))
+    {
+      xs.push_back(below);
+      xs.push_back(y);
+    }
+  const SI::Complex_vector r = SI::random_start_vector(1000, 3);
+  for(Eigen::Index i = 0; i < r.size(); ++i) xs.push_back(4. * pi * r[i].real());
+  bool odd = true, congruent = true, in_range = true;
+  for(double x : xs)
+  {
+    const double y = SI::reduce_angle(x), z = SI::reduce_angle(-x), minus_y = -y;
+    odd = odd && std::memcmp(&z, &minus_y, sizeof(double)) == 0;
+    const double turns = (x - y) / two_pi;  // an integer
+    congruent = congruent && std::abs(turns - std::round(turns)) <= 1e-15 * (1. + std::abs(turns)) + 1e-12;
+    in_range = in_range && std::abs(y) <= pi * (1. + 1e-15);
+  }
+  report.check(odd, "angle reduction is odd bit for bit (" + std::to_string(xs.size()) + " angles)");
+  report.check(congruent && in_range, "angle reduction is congruent modulo 2 pi and lies in [-pi, pi]");
 }
 
 // The matrices handed to the solver: A + shift M with both triangles, and its
@@ -775,6 +805,7 @@ int main()
   }
   check_local_matrices_by_quadrature(report);
   check_index_sum_with_zero_coefficients(report, sphere);
+  check_angle_reduction(report);
   {
     // A coarse torus with one edge collapsed across its 3 rings: the merged
     // vertex reaches a neighbour through two different edges.

@@ -87,16 +87,25 @@ inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
   for(Eigen::Index i = 0; i < n; ++i)
   {
     if(first_pass[i] >= 0) continue;
+    // the strongest coupling compared by squared modulus (no square root per neighbour)
     double strongest = -1.;
+    Eigen::Index best = -1;
+    Complex best_value;
     for(Complex_sparse_matrix::InnerIterator it(M, i); it; ++it)  // M_ji
     {
       const Eigen::Index j = it.row();
-      if(j == i || first_pass[static_cast<std::size_t>(j)] < 0 || std::abs(it.value()) <= strongest) continue;
-      strongest = std::abs(it.value());
-      g.of_vertex[i] = first_pass[static_cast<std::size_t>(j)];
-      g.phase[i] = std::conj(unit(it.value())) * g.phase[j];  // M_ij = conj(M_ji)
+      if(j == i || first_pass[static_cast<std::size_t>(j)] < 0 || std::norm(it.value()) <= strongest) continue;
+      strongest = std::norm(it.value());
+      best = j;
+      best_value = it.value();
     }
-    if(g.of_vertex[i] < 0) g.of_vertex[i] = g.count++;  // cannot happen: a free vertex with free neighbours is a root
+    if(best >= 0)
+    {
+      g.of_vertex[i] = first_pass[static_cast<std::size_t>(best)];
+      g.phase[i] = std::conj(unit(best_value)) * g.phase[best];  // M_ij = conj(M_ji)
+    }
+    else
+      g.of_vertex[i] = g.count++;  // cannot happen: a free vertex with free neighbours is a root
   }
   return g;
 }
