@@ -570,6 +570,18 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
 
   const SI::Supernodal_factor_view<int> view = SI::supernodal_view(*L);
   const SI::Supernodal_solve_plan plan(view);
+  // what the solve's kernels divide by: the diagonal of an LL^* factor, real and positive
+  bool real_diagonal = true;
+  for(std::size_t s = 0; s < view.supernodes; ++s)
+  {
+    const int columns = view.super[s + 1] - view.super[s], rows = view.row_start[s + 1] - view.row_start[s];
+    for(int j = 0; j < columns; ++j)
+    {
+      const Complex d = view.values[view.value_start[s] + j * rows + j];
+      real_diagonal = real_diagonal && d.imag() == 0. && d.real() > 0.;
+    }
+  }
+  report.check(real_diagonal, name + ": the diagonal of CHOLMOD's factor is real and positive");
   // every supernode in the top or in exactly one task; a supernode's parent
   // is in its task or in the top; the top's parents are in the top
   const std::size_t ns = view.supernodes;
