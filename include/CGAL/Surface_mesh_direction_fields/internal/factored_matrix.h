@@ -335,7 +335,7 @@ public:
   bool available() const { return m_ready; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
-    return supernodal_solve(m_view, *m_plan, Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>(B.col(0)));
+    return supernodal_solve(m_view, *m_plan, B.col(0));
   }
 #else
 public:

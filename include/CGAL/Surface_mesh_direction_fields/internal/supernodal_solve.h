@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#include <CGAL/use.h>
 
 #include <Eigen/Dense>
 
@@ -296,6 +297,25 @@ inline Complex adjoint_dot(const Complex* b, const Complex* t, Eigen::Index coun
   return Complex((re[0] + re[1]) + (re[2] + re[3]), (im[0] + im[1]) + (im[2] + im[3]));
 }
 
+// Asks the processor to start loading the entries of supernode s (a hint;
+// nothing on compilers without __builtin_prefetch). The backward solve walks
+// the supernodes from the last to the first, and the hardware prefetcher
+// then lagged behind: asking for the next supernode while one is solved took
+// the backward solve of the subtrees from 13 to 11 ms at 400,000 faces (the
+// forward solve, which walks up through memory, gained nothing from it).
+template <typename Index>
+void prefetch_supernode(const Supernodal_factor_view<Index>& L, std::size_t s)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  const char* begin = reinterpret_cast<const char*>(L.values + L.value_start[s]);
+  const char* end = reinterpret_cast<const char*>(L.values + L.value_start[s + 1]);
+  for(const char* line = begin; line < end; line += 64) __builtin_prefetch(line);
+#else
+  CGAL_USE(L);
+  CGAL_USE(s);
+#endif
+}
+
 // Forward step of supernode s on y: solves its diagonal block, then gives
 // each row r below it, with the product of that row and the solved part, to
 // subtract(r, value). One pass down the block's columns, each read once,
@@ -444,7 +464,7 @@ void backward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t 
 template <typename Index>
 Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>
 supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_plan& plan,
-                 const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>& b)
+                 const Eigen::Ref<const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1> >& b)
 {
   using namespace supernodal_detail;
   const Eigen::Index n = static_cast<Eigen::Index>(L.n);
@@ -485,7 +505,11 @@ supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_
   }
   parallel_for_each_task(tasks.size(), [&](std::size_t t) {
     Vector scratch;
-    for(std::size_t s = tasks[t].last + 1; s-- > tasks[t].first;) backward_supernode(L, s, y, scratch);
+    for(std::size_t s = tasks[t].last + 1; s-- > tasks[t].first;)
+    {
+      if(s > tasks[t].first) prefetch_supernode(L, s - 1);
+      backward_supernode(L, s, y, scratch);
+    }
   });
 
   Vector x(n);
