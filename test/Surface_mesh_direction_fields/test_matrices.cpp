@@ -13,12 +13,14 @@
 //  * the matrices handed to the solver: A + shift M, or its lower triangle for
 //    the Cholesky solvers, equal to Eigen's sum bit for bit; the parallel
 //    basis products of the eigen-solve equal Eigen's;
+//  * the components: each vertex and face in exactly one, in a fixed order;
 //  * the parallel solve with CHOLMOD's supernodal factor: CHOLMOD's solution,
 //    the same bits on any number of threads, a plan of whole subtrees.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
@@ -704,10 +706,59 @@ static void check_huge_page_advice(Test_report& report)
 #endif
 }
 
+// The components: an isolated vertex, then a sphere, then a torus: two components,
+// numbered in the order of their smallest vertex, each listing its vertices
+// once (the smallest first, local_index its inverse) and exactly its faces,
+// increasing; the isolated vertex belongs to none.
+static void check_components(Test_report& report)
+{
+  Mesh sphere, torus, mesh;
+  make_icosphere(sphere, 1);
+  make_torus(torus, 2., 0.5, 8, 6);
+  const Mesh::Vertex_index isolated = mesh.add_vertex(Kernel::Point_3(9., 9., 9.));
+  CGAL::copy_face_graph(sphere, mesh);
+  CGAL::copy_face_graph(torus, mesh);
+  const SI::Indexed_mesh m = index_mesh(mesh);
+  const SI::Components comps = SI::split_into_components(m);
+  report.check(comps.list.size() == 2, "components: a sphere and a torus");
+  report.check(comps.local_index[isolated] == SI::no_index, "components: an isolated vertex belongs to none");
+  if(comps.list.size() != 2) return;
+  const std::size_t first_torus_vertex = 1 + sphere.number_of_vertices();
+  const std::size_t first_torus_face = sphere.number_of_faces();
+  bool vertices_ok = true, faces_ok = true;
+  std::vector<int> seen(m.number_of_vertices(), 0);
+  for(std::size_t c = 0; c < 2; ++c)
+  {
+    const SI::Component& comp = comps.list[c];
+    const std::size_t expected_size = c == 0 ? sphere.number_of_vertices() : torus.number_of_vertices();
+    vertices_ok = vertices_ok && comp.vertices.size() == expected_size &&
+                  static_cast<std::size_t>(comp.vertices[0]) == (c == 0 ? 1 : first_torus_vertex);
+    for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+    {
+      const std::size_t v = comp.vertices[i];
+      vertices_ok = vertices_ok && comps.local_index[v] == i && ++seen[v] == 1 && ((v >= first_torus_vertex) == (c == 1));
+    }
+    const std::size_t expected_faces = c == 0 ? sphere.number_of_faces() : torus.number_of_faces();
+    faces_ok = faces_ok && comp.faces.size() == expected_faces;
+    for(std::size_t k = 0; k < comp.faces.size(); ++k)
+    {
+      const std::size_t f = comp.faces[k];
+      faces_ok = faces_ok && comps.component_of_face[f] == c && ((f >= first_torus_face) == (c == 1)) &&
+                 (k == 0 || comp.faces[k - 1] < f);
+      for(int corner = 0; corner < 3; ++corner)
+        faces_ok = faces_ok && comps.local_index[m.faces[f][corner]] < comp.vertices.size() &&
+                   comp.vertices[comps.local_index[m.faces[f][corner]]] == m.faces[f][corner];
+    }
+  }
+  report.check(vertices_ok, "components: each vertex once, smallest first, local_index the inverse");
+  report.check(faces_ok, "components: each face in the component of its vertices, in increasing order");
+}
+
 int main()
 {
   Test_report report("matrices");
   check_huge_page_advice(report);
+  check_components(report);
 
   {
     Mesh lumpy;

@@ -164,9 +164,6 @@ public:
 
     const internal::Point_to_array<GeomTraits> to_array{m_traits};
     m_mesh = internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
-    m_tangent_spaces = internal::compute_tangent_spaces(m_mesh, mollification);
-    m_components = internal::split_into_components(m_mesh);
-
     m_vertex_of_index.resize(m_mesh.number_of_vertices());
     for(vertex_descriptor v : vertices(tmesh))
       m_vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
@@ -174,16 +171,23 @@ public:
     for(face_descriptor f : faces(tmesh))
       m_face_of_index[static_cast<std::size_t>(get(fim, f))] = f;
 
-    // the tangent planes of the outputs and of the guidance vectors
-    if constexpr(is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
-      m_normals = internal::angle_weighted_vertex_normals(m_mesh, m_tangent_spaces);
-    else
-    {
-      const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
-      m_normals.resize(m_mesh.number_of_vertices());
-      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-        m_normals[i] = internal::normalized(to_array(get(vnm, m_vertex_of_index[i])));
-    }
+    // The components (a sequential breadth-first search) on one thread, while
+    // the other computes the tangent spaces and the normals.
+    auto find_components = [&] { m_components = internal::split_into_components(m_mesh); };
+    auto compute_tangent_planes = [&] {
+      m_tangent_spaces = internal::compute_tangent_spaces(m_mesh, mollification);
+      // the tangent planes of the outputs and of the guidance vectors
+      if constexpr(is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
+        m_normals = internal::angle_weighted_vertex_normals(m_mesh, m_tangent_spaces);
+      else
+      {
+        const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
+        m_normals.resize(m_mesh.number_of_vertices());
+        for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+          m_normals[i] = internal::normalized(to_array(get(vnm, m_vertex_of_index[i])));
+      }
+    };
+    internal::parallel_invoke(find_components, compute_tangent_planes);
     m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
 
@@ -362,7 +366,7 @@ public:
                                               CGAL::Emptyset_iterator());
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
     {
-      Component_report& report = result.components[m_mesh.component_of_face[f]];
+      Component_report& report = result.components[m_components.component_of_face[f]];
       report.index_sum += index[f];
       result.index_sum += index[f];
       if(index[f] != 0)

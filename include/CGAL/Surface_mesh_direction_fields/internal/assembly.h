@@ -17,9 +17,11 @@
 #include <CGAL/assertions.h>
 #include <CGAL/use.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/prefetch.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 
@@ -62,62 +64,6 @@ namespace internal {
 typedef std::complex<double> Complex;
 typedef Eigen::SparseMatrix<Complex> Complex_sparse_matrix;
 typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Complex_vector;
-
-// The vertices and faces of one connected component.
-struct Component
-{
-  std::vector<Compact_index> vertices;  // global index of each local vertex
-  std::vector<Compact_index> faces;     // global face indices
-};
-
-// All components, and the index of each vertex within its component
-// (`no_index` for isolated vertices).
-struct Components
-{
-  std::vector<Component> list;
-  std::vector<Compact_index> local_index;
-};
-
-inline Components split_into_components(const Indexed_mesh& m)
-{
-  Components comps;
-  comps.list.resize(m.number_of_components);
-  comps.local_index.assign(m.number_of_vertices(), no_index);
-  // Each component's vertices in breadth-first order from its smallest vertex:
-  // neighbours get nearby local indices, so the rows of A and M touch nearby
-  // entries of a vector. On a mesh whose vertex order has no locality (Loop
-  // subdivision appends the edge midpoints), this makes the sparse products
-  // of the eigen-solve about twice as fast at 800,000 vertices.
-  for(std::size_t start = 0; start < m.number_of_vertices(); ++start)
-  {
-    const std::size_t c = m.component_of_vertex[start];
-    if(c == no_index || comps.local_index[start] != no_index) continue;
-    std::vector<Compact_index>& order = comps.list[c].vertices;
-    comps.local_index[start] = 0;
-    order.push_back(start);
-    // The neighbours of v in fan order: the vertex after v in each corner's
-    // face, then, in an open fan, the vertex before v in the last corner's
-    // face (in a fan, the vertex before v in one corner is the vertex after v
-    // in the next corner, so each neighbour is looked at once).
-    auto visit = [&](std::size_t w) {
-      if(comps.local_index[w] != no_index) return;
-      comps.local_index[w] = order.size();
-      order.push_back(w);
-    };
-    for(std::size_t next = 0; next < order.size(); ++next)
-    {
-      const std::size_t v = order[next];
-      const std::size_t first = m.fan_offsets[v], end = m.fan_offsets[v + 1];
-      for(std::size_t k = first; k < end; ++k)
-        visit(m.vertex_of_corner(Indexed_mesh::next_corner(m.fan_corners[k])));
-      if(m.is_border_vertex[v] && end > first)
-        visit(m.vertex_of_corner(Indexed_mesh::previous_corner(m.fan_corners[end - 1])));
-    }
-  }
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-    comps.list[m.component_of_face[f]].faces.push_back(f);
-  return comps;
-}
 
 struct Local_matrices
 {
@@ -193,6 +139,7 @@ public:
 
   void construct(std::size_t f, const Local_matrices& lm) { new(m_data + f) Local_matrices(lm); }
   const Local_matrices& operator[](std::size_t f) const { return m_data[f]; }
+  void prefetch(std::size_t f) const { prefetch_range(m_data + f, sizeof(Local_matrices)); }
 };
 
 // The local matrices of every face (indexed by face); the faces are
@@ -200,7 +147,7 @@ public:
 inline void compute_all_local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts, const Connection& con,
                                        double s, Local_matrix_array& local)
 {
-  parallel_for_each_index(ts.face_area.size(), [&](std::size_t f) { local.construct(f, local_matrices(m, ts, con, f, s)); });
+  parallel_for_each_face(m, [&](std::size_t f) { local.construct(f, local_matrices(m, ts, con, f, s)); });
 }
 
 struct Column_entry
@@ -302,6 +249,13 @@ inline bool fill_columns(const Indexed_mesh& m, const Local_matrix_array& local,
     std::vector<Column_entry> column;
     for(std::size_t jl = begin; jl < end; ++jl)
     {
+      // the local matrices of the faces of a column two steps ahead (see prefetch.h)
+      if(jl + 2 < end)
+      {
+        const std::size_t ahead = comp.vertices[jl + 2];
+        for(std::size_t k = m.fan_offsets[ahead]; k < m.fan_offsets[ahead + 1]; ++k)
+          local.prefetch(m.fan_corners[k] / 3);
+      }
       gather_column(m, local, local_index, comp.vertices[jl], column);
       if(column.size() != static_cast<std::size_t>(column_size[jl]))
       {

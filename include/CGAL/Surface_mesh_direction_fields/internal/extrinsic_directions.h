@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
@@ -42,19 +43,24 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// Each vertex gathers over its own fan (in parallel), recomputing the normals
+// of its faces: cheaper than storing them, and no two vertices write to the
+// same place.
 inline std::vector<Vec3> angle_weighted_vertex_normals(const Indexed_mesh& m, const Tangent_spaces& ts)
 {
-  std::vector<Vec3> normals(m.number_of_vertices(), Vec3{0., 0., 0.});
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-  {
-    const auto& t = m.faces[f];
-    const Vec3 nf = normalized(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
-    // (a degenerate face, mollified, has no normal and adds nothing)
-    for(int c = 0; c < 3; ++c)
-      normals[t[c]] = normals[t[c]] + ts.corner_angle[3 * f + c] * nf;
-  }
-  for(Vec3& nv : normals)
-    nv = normalized(nv);
+  std::vector<Vec3> normals(m.number_of_vertices());
+  parallel_for_each_index(m.number_of_vertices(), [&](std::size_t v) {
+    Vec3 sum{0., 0., 0.};
+    for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
+    {
+      const std::size_t corner = m.fan_corners[k];
+      const auto& t = m.faces[corner / 3];
+      const Vec3 nf = normalized(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
+      // (a degenerate face, mollified, has no normal and adds nothing)
+      sum = sum + ts.corner_angle[corner] * nf;
+    }
+    normals[v] = normalized(sum);
+  });
   return normals;
 }
 

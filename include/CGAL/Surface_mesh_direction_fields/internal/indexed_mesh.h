@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/prefetch.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -26,7 +27,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -84,12 +84,6 @@ struct Indexed_mesh
   // `no_index` on the border.
   std::vector<Compact_index> twin_corner;
 
-  // Connected components (through shared vertices). Isolated vertices belong
-  // to no component (`no_index`).
-  std::size_t number_of_components = 0;
-  std::vector<Compact_index> component_of_vertex;
-  std::vector<Compact_index> component_of_face;
-
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_faces() const { return faces.size(); }
   std::size_t fan_size(std::size_t v) const { return fan_offsets[v + 1] - fan_offsets[v]; }
@@ -100,38 +94,26 @@ struct Indexed_mesh
   std::size_t vertex_of_corner(std::size_t corner) const { return faces[corner / 3][corner % 3]; }
 };
 
-// Union-find over the vertices of each face.
-inline void label_connected_components(Indexed_mesh& m)
+// Starts loading data[v] for the three vertices v of face f (see prefetch.h).
+template <typename PerVertex>
+void prefetch_face_vertices(const Indexed_mesh& m, const std::vector<PerVertex>& data, std::size_t f)
 {
-  const std::size_t nv = m.number_of_vertices();
-  std::vector<std::size_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  for(const auto& f : m.faces)
-    for(int c = 1; c < 3; ++c)
+  const auto& t = m.faces[f];
+  for(int c = 0; c < 3; ++c) prefetch_address(data.data() + static_cast<std::size_t>(t[c]));
+}
+
+// body(f) for every face f, in parallel, each face's points being asked for
+// a few faces ahead (the loops over faces that read the points).
+template <typename FaceBody>
+void parallel_for_each_face(const Indexed_mesh& m, const FaceBody& body)
+{
+  parallel_for_each_range(m.number_of_faces(), [&](std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f)
     {
-      std::size_t a = find(f[0]), b = find(f[c]);
-      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+      if(f + prefetch_distance < end) prefetch_face_vertices(m, m.points, f + prefetch_distance);
+      body(f);
     }
-  // Number components in order of their smallest vertex index (deterministic).
-  std::vector<std::size_t> label(nv, no_index);
-  m.component_of_vertex.assign(nv, no_index);
-  m.number_of_components = 0;
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    if(m.fan_size(v) == 0)
-      continue;  // isolated vertex
-    std::size_t root = find(v);
-    if(label[root] == no_index)
-      label[root] = m.number_of_components++;
-    m.component_of_vertex[v] = label[root];
-  }
-  m.component_of_face.resize(m.number_of_faces());
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-    m.component_of_face[f] = m.component_of_vertex[m.faces[f][0]];
+  });
 }
 
 // Builds the flat representation. `point_of(v)` returns the coordinates of a
@@ -270,7 +252,6 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
     throw Invalid_input_error("vertex " + std::to_string(bad - non_manifold.begin()) +
                               " is non-manifold (its incident faces do not form a single fan)");
 
-  label_connected_components(m);
   return m;
 }
 

@@ -21,6 +21,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #endif
 
 // Loops over independent indices: in parallel with TBB when CGAL is linked
@@ -91,6 +92,20 @@ void parallel_for_each_chunk(std::size_t n, const ChunkBody& body)
   }
 #endif
   for(std::size_t k = 0; k < chunks; ++k) run_chunk(k);
+}
+
+// first() and second(), two independent pieces of work, at the same time
+// when TBB is available (each may run parallel loops of its own: the thread
+// that finishes first joins the other's loops); one after the other otherwise.
+template <typename First, typename Second>
+void parallel_invoke(const First& first, const Second& second)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
+  tbb::parallel_invoke(first, second);
+#else
+  first();
+  second();
+#endif
 }
 
 // A reduction over [0, n) whose result does not depend on the number of

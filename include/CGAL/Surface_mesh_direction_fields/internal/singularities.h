@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <cmath>
 #include <complex>
@@ -39,25 +40,10 @@ namespace internal {
 // coefficient would then give omega = 0 on both sides of an edge without a
 // common angle, and the face sums would no longer be multiples of 2 pi.)
 //
-// The reduction subtracts the nearest multiple of 2 pi, found by truncation
-// (which does not depend on the rounding mode), instead of calling
-// std::remainder, which took a quarter of this step's time. Every operation
-// in it is odd (x / c, adding sign(y) / 2, truncation, k c and x - k c, fused
-// or not, change sign exactly with x), so omega_ji = -omega_ij still holds
-// exactly across an interior edge (r_ji = conj(r_ij) exactly, so rho_ji =
-// -rho_ij), which is what makes the indices of a closed component sum to
-// n chi. (Where x / 2 pi is within an ulp of a half, the result may fall just
-// outside (-pi, pi]; it is still congruent to x and odd in x.)
-inline double reduce_angle(double x)
-{
-  const double two_pi = 2. * CGAL_PI;
-  const double turns = x / two_pi;
-  if(!(std::abs(turns) < 1e15))
-    return std::remainder(x, two_pi);  // not reached: |x| < 3 pi here
-  const double k = static_cast<double>(static_cast<long long>(turns + std::copysign(0.5, turns)));
-  return x - two_pi * k;
-}
-
+// The reduction (reduce_angle(), vector_math.h) is odd bit for bit, so
+// omega_ji = -omega_ij holds exactly across an interior edge (r_ji =
+// conj(r_ij) exactly, so rho_ji = -rho_ij), which is what makes the indices
+// of a closed component sum to n chi.
 inline int face_index(const Indexed_mesh& m, const Connection& con, const std::vector<double>& theta, std::size_t f)
 {
   double total = con.holonomy[f];

@@ -142,6 +142,7 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
         Lengths chunk{0., std::numeric_limits<double>::infinity()};
         for(std::size_t f = begin; f < end; ++f)
         {
+          if(f + prefetch_distance < end) prefetch_face_vertices(m, m.points, f + prefetch_distance);
           const double l[3] = {embedded_side_length(m, f, 0), embedded_side_length(m, f, 1),
                                embedded_side_length(m, f, 2)};
           for(int c = 0; c < 3; ++c)
@@ -160,7 +161,7 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
   }
 
   std::vector<unsigned char> degenerate(nf, 0);
-  parallel_for_each_index(nf, [&](std::size_t f) {
+  parallel_for_each_face(m, [&](std::size_t f) {
     double area = 0.;
     const Face_geometry g = face_geometry(m, f, ts.mollification, &area);
     ts.face_area[f] = area;
@@ -249,8 +250,8 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
       const double theta_ij = ts.corner_theta[ci];
       const double theta_ji = ts.corner_theta[cj] + ts.angle_scale[j] * ts.corner_angle[cj];
       // Reduce before multiplying by n so that large degrees keep their accuracy.
-      const double angle = std::remainder(theta_ji - theta_ij + CGAL_PI, 2. * CGAL_PI);
-      con.transport[ci] = std::polar(1., std::remainder(n * angle, 2. * CGAL_PI));
+      const double angle = reduce_angle(theta_ji - theta_ij + CGAL_PI);
+      con.transport[ci] = std::polar(1., reduce_angle(n * angle));
     }
     con.holonomy[f] = n * ts.face_angle_defect[f];
   });

@@ -14,10 +14,12 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <array>
 #include <cmath>
 
-// Small double-precision 3-vectors. All linear algebra of the package runs in
+// Small double-precision 3-vectors, and the reduction of angles. All linear algebra of the package runs in
 // double whatever the kernel: coordinates are converted once when the mesh is
 // indexed, so exact kernels pay no price in the numerics.
 
@@ -42,6 +44,24 @@ inline Vec3 normalized(const Vec3& a)
 {
   const double l = norm(a);
   return l > 0. ? (1. / l) * a : a;
+}
+
+// x reduced to (-pi, pi] by subtracting the nearest multiple of 2 pi, found
+// by truncation (which does not depend on the rounding mode), instead of
+// std::remainder, which took a quarter of the time of the face indices and a
+// tenth of the connection's. Every operation in it is odd (x / c, adding
+// sign(y) / 2, truncation, k c and x - k c, fused or not, change sign exactly
+// with x), so reduce_angle(-x) = -reduce_angle(x) bit for bit. (Where x / 2 pi
+// is within an ulp of a half, the result may fall just outside (-pi, pi]; it
+// is still congruent to x and odd in x.)
+inline double reduce_angle(double x)
+{
+  const double two_pi = 2. * CGAL_PI;
+  const double turns = x / two_pi;
+  if(!(std::abs(turns) < 1e15))
+    return std::remainder(x, two_pi);  // huge (or non-finite) angles
+  const double k = static_cast<double>(static_cast<long long>(turns + std::copysign(0.5, turns)));
+  return x - two_pi * k;
 }
 
 } // namespace internal
