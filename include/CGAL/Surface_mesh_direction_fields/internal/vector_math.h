@@ -19,9 +19,10 @@
 #include <array>
 #include <cmath>
 
-// Small double-precision 3-vectors, and the reduction of angles. All linear algebra of the package runs in
-// double whatever the kernel: coordinates are converted once when the mesh is
-// indexed, so exact kernels pay no price in the numerics.
+// Small double-precision 3-vectors, and the reduction of angles. All linear
+// algebra of the package runs in double whatever the kernel: coordinates are
+// converted once when the mesh is indexed, so exact kernels pay no price in
+// the numerics.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
