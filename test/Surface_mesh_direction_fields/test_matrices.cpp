@@ -607,7 +607,7 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
     const int columns = view.super[s + 1] - view.super[s], rows = view.row_start[s + 1] - view.row_start[s];
     if(owner[s] == -1)
     {
-      large_top = large_top || SI::supernodal_detail::is_large(rows, columns);
+      large_top = large_top || SI::is_large_supernode(rows, columns);
       largest_top = (std::max)(largest_top, long(rows) * long(columns));
     }
     if(rows == columns) continue;

@@ -2,7 +2,7 @@
 // closed forms (method.md, section 4), on a dense sample of [-6 pi, 6 pi] that
 // includes |Omega| < 1e-6 and Omega = 0.
 
-#include <CGAL/Surface_mesh_direction_fields/internal/section_integrals.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/section_integrals.h>
 
 #include "test_support.h"
 

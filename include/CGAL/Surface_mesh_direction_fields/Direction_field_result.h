@@ -48,8 +48,8 @@ struct Component_report
   double alignment_weight = 0.;
   /// number of inverse iterations performed (plus, with `alignment_weight`, the linear solves of the root finding)
   std::size_t iterations = 0;
-  /// final relative residual \f$ \|A u - \lambda M u\| / (\sigma \|M u\|) \f$, with
-  /// \f$ \sigma = \mathrm{tr}(A) / \mathrm{tr}(M) \f$
+  /// final relative residual \f$ \|A u - \lambda M u\| / (s_A \|M u\|) \f$, with
+  /// \f$ s_A = \mathrm{tr}(A) / \mathrm{tr}(M) \f$ (a typical eigenvalue of the pencil)
   double residual = 0.;
   /// `true` if the residual reached the requested tolerance
   bool converged = false;

@@ -20,19 +20,24 @@
 #endif
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
-#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/aligned_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/field_inputs.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/guidance.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+// the mesh plumbing: flat arrays, components, the named parameters read into them
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/field_inputs.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+// the method: tangent spaces -> connection -> local matrices -> A, M -> directions, indices
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+// the linear algebra: factorizations, the eigen-solve, the linear solves
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/singularities.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -217,191 +222,50 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     using parameters::is_default_parameter;
-    typedef typename GeomTraits::FT FT;
-
     const auto start = Clock::now();
     Direction_field_result result;
     result.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
     result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
     internal::check_field_parameters(result.degree, result.smoothness_parameter);
     result.mollification = m_tangent_spaces.mollification;
-
-    internal::Eigen_solve_options options;
-    options.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
-    options.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
-    options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
-    options.shift_fraction = internal::shift_fraction_for(result.smoothness_parameter);
-    if(!(options.residual_tolerance >= 0.))
-      throw Invalid_input_error("the residual tolerance must be non-negative");
+    const internal::Eigen_solve_options options = eigen_solve_options(np, result.smoothness_parameter);
 
     // A solver given as a named parameter is used for this call only, without reuse.
     constexpr bool user_solver = !is_default_parameter<NamedParameters, internal_np::sparse_linear_solver_t>::value;
-    SparseSolver aligned_solver = choose_parameter<SparseSolver>(get_parameter(np, internal_np::sparse_linear_solver));
+    SparseSolver linear_solver = choose_parameter<SparseSolver>(get_parameter(np, internal_np::sparse_linear_solver));
     m_user_solver = user_solver ? std::make_unique<Component_factorization>() : nullptr;
-    if(user_solver) m_user_solver->solver = aligned_solver;
+    if(user_solver) m_user_solver->solver = linear_solver;
 
-    // --- the connection of degree n and the matrices of (n, s), unless kept from the last call
+    // 1. the connection of degree n and the matrices of (n, s), unless kept from the last call
     update_matrices(result.degree, result.smoothness_parameter);
-    const internal::Point_to_array<GeomTraits> to_array{m_traits};
-    result.timings.setup_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    result.timings.setup_ms = milliseconds_since(start);
 
-    // --- guidance field q and hard constraints (method.md, section 6)
-    const std::vector<Complex> guidance =
-      internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np, m_vertex_of_index, m_normals,
-                                      result.degree, aligned_solver, to_array);
-    const bool has_guidance = !guidance.empty();
-    const internal::Vertex_constraints constraints =
-      internal::vertex_constraints(m_mesh, m_tangent_spaces, np, m_vertex_of_index, m_normals, result.degree, to_array);
-    const bool lambda_given = !is_default_parameter<NamedParameters, internal_np::alignment_lambda_t>::value;
-    const bool weight_given = !is_default_parameter<NamedParameters, internal_np::alignment_weight_t>::value;
-    const double lambda_requested = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
-    const double weight_requested = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
-    if(lambda_given && weight_given)
-      throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
-    if(lambda_given && !std::isfinite(lambda_requested))
-      throw Invalid_input_error("alignment_lambda must be a finite number");
-    if(weight_given && !(weight_requested > 0. && weight_requested < 1.))
-      throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + std::to_string(weight_requested) + ")");
-    if(weight_given && !has_guidance)
-      throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned Fields")
+    const Field_requests requests = read_field_requests(np, result.degree, linear_solver);
 
-    // --- one problem per component: the smallest eigenvector, or the aligned /
-    //     constrained linear solve
-    std::vector<Complex> u(m_mesh.number_of_vertices(), Complex(0., 0.));
-    std::vector<double> magnitude(m_mesh.number_of_vertices(), 0.);
+    // 3. one problem per component: the smallest eigenvector, or the aligned / constrained solve
+    Vertex_field field(m_mesh.number_of_vertices());
     result.components.resize(m_components.list.size());
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
     {
-      const internal::Component& comp = m_components.list[c];
-      const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
-      Component_report& report = result.components[c];
-      internal::describe_component(m_mesh, comp, report);
-      const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
-      const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
-
-      // this component's guidance, normalized to ||q||_M = 1 (none if it vanishes here)
-      internal::Complex_vector q = internal::Complex_vector::Zero(nc);
-      for(Eigen::Index i = 0; i < nc; ++i)
-        if(has_guidance) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
-      const double q_norm = internal::m_norm(M, q);
-      const bool aligned = has_guidance && q_norm > 0.;
-      if(aligned) q /= q_norm;
-      internal::Constraints local_constraints;
-      bool constrained = false;
-      if(!constraints.is_constrained.empty())
-      {
-        local_constraints.is_constrained.resize(comp.vertices.size());
-        local_constraints.values.resize(nc);
-        for(Eigen::Index i = 0; i < nc; ++i)
-        {
-          const std::size_t v = comp.vertices[static_cast<std::size_t>(i)];
-          local_constraints.is_constrained[static_cast<std::size_t>(i)] = constraints.is_constrained[v];
-          local_constraints.values[i] = constraints.values[v];
-          constrained = constrained || constraints.is_constrained[v];
-        }
-      }
-
-      internal::Complex_vector field;
-      const bool needs_eigenvalue = !constrained || aligned;  // lambda_1: the smoothest field, or the bound of lambda_t
-      if(needs_eigenvalue)
-      {
-        internal::Eigen_solve_options component_options = options;
-        internal::Factored_matrix<SparseSolver>& factored = eigen_factorization(c, component_options, user_solver);
-        const internal::Eigen_solve_result eig = internal::smallest_eigenpair(A, M, factored, component_options);
-        if(!m_keep_factorizations && !user_solver) m_factorizations[c].reset();
-        report.eigenvalue = eig.eigenvalue;
-        report.iterations = eig.iterations;
-        report.residual = eig.residual;
-        report.converged = eig.converged;
-        result.timings.factorization_ms += eig.factorization_ms;
-        field = eig.vector;
-      }
-      if(aligned || constrained)
-      {
-        const internal::Complex_vector Mq = M * q;
-        const double sigma = A.diagonal().real().sum() / M.diagonal().real().sum();
-        // The default lambda_t is 0, as in the paper, unless lambda_1 is (nearly) 0
-        // (a flat or developable component), where 0 is not admissible.
-        double lambda = lambda_requested;
-        if(aligned && !lambda_given)
-          lambda = (std::min)(0., report.eigenvalue - 1e-6 * sigma);
-        if(aligned && weight_given)
-        {
-          std::size_t evaluations = 0;
-          internal::Factored_matrix<SparseSolver> factored(aligned_solver);
-          lambda = internal::find_lambda_for_weight(A, M, Mq, local_constraints, report.eigenvalue, weight_requested,
-                                                    sigma, factored, field, evaluations);
-          report.iterations += evaluations;
-        }
-        else
-        {
-          if(aligned && !(lambda < report.eigenvalue))
-            throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
-                                      std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
-                                      " (got " + std::to_string(lambda) + ")");
-          internal::Factored_matrix<SparseSolver> factored(aligned_solver);
-          field = internal::solve_aligned_system(A, M, lambda, Mq, local_constraints, factored);
-        }
-        report.lambda = lambda;
-        report.alignment_weight = aligned ? internal::alignment_weight_of(M, field) : 0.;
-        const double field_norm = internal::m_norm(M, field);
-        if(field_norm > 0.) field /= field_norm;
-      }
-
-      double area = 0.;
-      for(std::size_t f : comp.faces) area += m_tangent_spaces.face_area[f];
-      for(std::size_t i = 0; i < comp.vertices.size(); ++i)
-      {
-        u[comp.vertices[i]] = field[static_cast<Eigen::Index>(i)];
-        magnitude[comp.vertices[i]] = std::abs(field[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
-      }
+      solve_component(c, requests, options, user_solver, linear_solver, result, field);
+      const Component_report& report = result.components[c];
       result.iterations = (std::max)(result.iterations, report.iterations);
       result.residual = (std::max)(result.residual, report.residual);
       result.converged = result.converged && report.converged;
     }
 
-    // --- singularities
-    const std::vector<int> index = internal::face_indices(m_mesh, m_connection, u);
-    auto singularities_out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
-                                              CGAL::Emptyset_iterator());
-    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-    {
-      Component_report& report = result.components[m_components.component_of_face[f]];
-      report.index_sum += index[f];
-      result.index_sum += index[f];
-      if(index[f] != 0)
-      {
-        ++report.number_of_singular_faces;
-        ++result.number_of_singular_faces;
-        *singularities_out++ = std::make_pair(m_face_of_index[f], index[f]);
-      }
-    }
-
-    // --- directions in 3D
-    auto construct_vector = m_traits.construct_vector_3_object();
-    // computed in parallel, written sequentially (a property map need not be thread-safe)
-    std::vector<internal::Vec3> directions(m_vertex_of_index.size());
-    internal::parallel_for_each_index(directions.size(), [&](std::size_t i) {
-      directions[i] = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], result.degree, m_normals[i]);
-    });
-    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-    {
-      const internal::Vec3& d = directions[i];
-      put(vertex_direction_map, m_vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
-      if(m_mesh.fan_size(i) == 0)
-        ++result.number_of_isolated_vertices;
-    }
+    // 4. the outputs: singular faces with their indices, unit directions in 3D, magnitudes
+    report_singularities(field.coefficients,
+                         choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
+                                          CGAL::Emptyset_iterator()),
+                         result);
+    write_directions(field.coefficients, result.degree, vertex_direction_map, result);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
-    {
-      auto vmm = get_parameter(np, internal_np::vertex_magnitude_map);
-      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-        put(vmm, m_vertex_of_index[i], magnitude[i]);
-    }
+      write_magnitudes(field.magnitudes, get_parameter(np, internal_np::vertex_magnitude_map));
 
-    const auto end = Clock::now();
-    result.timings.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
+    result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
-
     if(!m_keep_factorizations) m_factorizations.clear();
     m_user_solver.reset();
     return result;
@@ -418,6 +282,223 @@ public:
   /// \endcond
 
 private:
+  // The field being built: a coefficient and a magnitude per vertex.
+  struct Vertex_field
+  {
+    explicit Vertex_field(std::size_t n) : coefficients(n, Complex(0., 0.)), magnitudes(n, 0.) {}
+    std::vector<Complex> coefficients;
+    std::vector<double> magnitudes;
+  };
+
+  // What the named parameters ask the field to follow.
+  struct Field_requests
+  {
+    std::vector<Complex> guidance;  // q per vertex, before normalization; empty: none
+    internal::Vertex_constraints constraints;
+    internal::Alignment_request alignment;
+  };
+
+  static double milliseconds_since(Clock::time_point start)
+  {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
+
+  template <typename NamedParameters>
+  static internal::Eigen_solve_options eigen_solve_options(const NamedParameters& np, double s)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    internal::Eigen_solve_options options;
+    options.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
+    options.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
+    options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+    options.shift_fraction = internal::shift_fraction_for(s);
+    if(!(options.residual_tolerance >= 0.))
+      throw Invalid_input_error("the residual tolerance must be non-negative");
+    return options;
+  }
+
+  template <typename NamedParameters>
+  Field_requests read_field_requests(const NamedParameters& np, int degree, SparseSolver& linear_solver) const
+  {
+    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    Field_requests requests;
+    requests.guidance = internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np, m_vertex_of_index,
+                                                        m_normals, degree, linear_solver, to_array);
+    requests.constraints =
+      internal::vertex_constraints(m_mesh, m_tangent_spaces, np, m_vertex_of_index, m_normals, degree, to_array);
+    requests.alignment = internal::alignment_request(np, !requests.guidance.empty());
+    return requests;
+  }
+
+  // Component c's guidance, normalized to ||q||_M = 1; `present` tells
+  // whether it has any (q = 0 otherwise).
+  static internal::Complex_vector component_guidance(const internal::Component& comp,
+                                                     const std::vector<Complex>& guidance,
+                                                     const internal::Complex_sparse_matrix& M, bool& present)
+  {
+    const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
+    internal::Complex_vector q = internal::Complex_vector::Zero(nc);
+    present = false;
+    if(guidance.empty()) return q;
+    for(Eigen::Index i = 0; i < nc; ++i) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
+    const double q_norm = internal::m_norm(M, q);
+    present = q_norm > 0.;
+    if(present) q /= q_norm;
+    return q;
+  }
+
+  // Component c's share of the constraints (empty if it has none).
+  static internal::Constraints component_constraints(const internal::Component& comp,
+                                                     const internal::Vertex_constraints& constraints)
+  {
+    internal::Constraints local;
+    if(constraints.is_constrained.empty()) return local;
+    const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
+    local.is_constrained.resize(comp.vertices.size());
+    local.values.resize(nc);
+    for(Eigen::Index i = 0; i < nc; ++i)
+    {
+      const std::size_t v = comp.vertices[static_cast<std::size_t>(i)];
+      local.is_constrained[static_cast<std::size_t>(i)] = constraints.is_constrained[v];
+      local.values[i] = constraints.values[v];
+    }
+    return local;
+  }
+
+  // The field of component c, into `field`; its report into result.components[c].
+  void solve_component(std::size_t c, const Field_requests& requests, const internal::Eigen_solve_options& options,
+                       bool user_solver, SparseSolver& linear_solver, Direction_field_result& result,
+                       Vertex_field& field)
+  {
+    const internal::Component& comp = m_components.list[c];
+    Component_report& report = result.components[c];
+    internal::describe_component(m_mesh, comp, report);
+    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    bool aligned = false;
+    const internal::Complex_vector q = component_guidance(comp, requests.guidance, M, aligned);
+    const internal::Constraints constraints = component_constraints(comp, requests.constraints);
+    const bool constrained = !constraints.empty();
+
+    internal::Complex_vector u;
+    if(!constrained || aligned)  // lambda_1: the smoothest field, or the bound of lambda_t
+      u = smallest_eigenvector(c, options, user_solver, report, result.timings);
+    if(aligned || constrained)
+      u = aligned_field(c, q, aligned, constraints, requests.alignment, linear_solver, report);
+
+    double area = 0.;
+    for(std::size_t f : comp.faces) area += m_tangent_spaces.face_area[f];
+    for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+    {
+      field.coefficients[comp.vertices[i]] = u[static_cast<Eigen::Index>(i)];
+      field.magnitudes[comp.vertices[i]] = std::abs(u[static_cast<Eigen::Index>(i)]) * std::sqrt(area);
+    }
+  }
+
+  // The smallest eigenpair of component c's pencil (A, M) (manual, "The Smoothest Field").
+  internal::Complex_vector smallest_eigenvector(std::size_t c, internal::Eigen_solve_options options, bool user_solver,
+                                                Component_report& report, Direction_field_timings& timings)
+  {
+    internal::Factored_matrix<SparseSolver>& factored = eigen_factorization(c, options, user_solver);
+    internal::Eigen_solve_result eig = internal::smallest_eigenpair(m_matrices[c].energy, m_matrices[c].mass, factored, options);
+    if(!m_keep_factorizations && !user_solver) m_factorizations[c].reset();
+    report.eigenvalue = eig.eigenvalue;
+    report.iterations = eig.iterations;
+    report.residual = eig.residual;
+    report.converged = eig.converged;
+    timings.factorization_ms += eig.factorization_ms;
+    return std::move(eig.vector);
+  }
+
+  // The aligned and/or constrained field of component c: (A - lambda_t M) u = M q
+  // with u fixed on the constrained vertices (manual, "Aligned Fields"),
+  // normalized to ||u||_M = 1.
+  internal::Complex_vector aligned_field(std::size_t c, const internal::Complex_vector& q, bool aligned,
+                                         const internal::Constraints& constraints,
+                                         const internal::Alignment_request& request, SparseSolver& linear_solver,
+                                         Component_report& report) const
+  {
+    const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
+    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    const internal::Complex_vector Mq = M * q;
+    const double scale = internal::eigenvalue_scale(A, M);
+    // The default lambda_t is 0, as in the paper, unless lambda_1 is (nearly) 0
+    // (a flat or developable component), where 0 is not admissible.
+    double lambda = request.lambda;
+    if(aligned && !request.lambda_given)
+      lambda = (std::min)(0., report.eigenvalue - 1e-6 * scale);
+    internal::Complex_vector u;
+    internal::Factored_matrix<SparseSolver> factored(linear_solver);
+    if(aligned && request.weight_given)
+    {
+      std::size_t evaluations = 0;
+      lambda = internal::find_lambda_for_weight(A, M, Mq, constraints, report.eigenvalue, request.weight, scale,
+                                                factored, u, evaluations);
+      report.iterations += evaluations;
+    }
+    else
+    {
+      if(aligned && !(lambda < report.eigenvalue))
+        throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
+                                  std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
+                                  " (got " + std::to_string(lambda) + ")");
+      u = internal::solve_shifted_system(A, M, lambda, Mq, constraints, factored);
+    }
+    report.lambda = lambda;
+    report.alignment_weight = aligned ? internal::alignment_weight_of(M, u) : 0.;
+    const double u_norm = internal::m_norm(M, u);
+    if(u_norm > 0.) u /= u_norm;
+    return u;
+  }
+
+  // The faces of non-zero index, to `out`, and the index sums (manual, "Singularities").
+  template <typename SingularityOutputIterator>
+  void report_singularities(const std::vector<Complex>& u, SingularityOutputIterator out,
+                            Direction_field_result& result) const
+  {
+    const std::vector<int> index = internal::face_indices(m_mesh, m_connection, u);
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      Component_report& report = result.components[m_components.component_of_face[f]];
+      report.index_sum += index[f];
+      result.index_sum += index[f];
+      if(index[f] != 0)
+      {
+        ++report.number_of_singular_faces;
+        ++result.number_of_singular_faces;
+        *out++ = std::make_pair(m_face_of_index[f], index[f]);
+      }
+    }
+  }
+
+  // The unit 3D direction of every vertex, into the user's map (computed in
+  // parallel, written sequentially: a property map need not be thread-safe).
+  template <typename VertexDirectionMap>
+  void write_directions(const std::vector<Complex>& u, int degree, VertexDirectionMap vertex_direction_map,
+                        Direction_field_result& result) const
+  {
+    typedef typename GeomTraits::FT FT;
+    auto construct_vector = m_traits.construct_vector_3_object();
+    std::vector<internal::Vec3> directions(m_vertex_of_index.size());
+    internal::parallel_for_each_index(directions.size(), [&](std::size_t i) {
+      directions[i] = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], degree, m_normals[i]);
+    });
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+    {
+      const internal::Vec3& d = directions[i];
+      put(vertex_direction_map, m_vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+      if(m_mesh.fan_size(i) == 0)
+        ++result.number_of_isolated_vertices;
+    }
+  }
+
+  template <typename VertexMagnitudeMap>
+  void write_magnitudes(const std::vector<double>& magnitudes, VertexMagnitudeMap vmm) const
+  {
+    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+      put(vmm, m_vertex_of_index[i], magnitudes[i]);
+  }
+
   void update_matrices(int degree, double s)
   {
     if(!(m_has_matrices && degree == m_degree))

@@ -14,7 +14,8 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 #include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 
 #ifdef DOXYGEN_RUNNING
@@ -58,7 +59,7 @@ in dark blue-green.
 \param streamlines the lines to draw (may be empty)
 \param title the title of the window
 */
-void draw_direction_field(const IO::Direction_field_data& data, const std::vector<Streamline>& streamlines,
+void draw_direction_field(const Direction_field_data& data, const std::vector<Streamline>& streamlines,
                           const char* title = "Direction field");
 } // namespace Surface_mesh_direction_fields
 
@@ -81,11 +82,11 @@ namespace internal {
 class Direction_field_viewer : public CGAL::Basic_viewer_qt
 {
   typedef CGAL::Basic_viewer_qt Base;
-  const IO::Direction_field_data& m_data;
+  const Direction_field_data& m_data;
   const std::vector<Streamline>& m_lines;
 
 public:
-  Direction_field_viewer(QWidget* parent, const IO::Direction_field_data& data,
+  Direction_field_viewer(QWidget* parent, const Direction_field_data& data,
                          const std::vector<Streamline>& lines, const char* title)
     : Base(parent, title, false, true, true, false, false), m_data(data), m_lines(lines)
   {
@@ -111,15 +112,14 @@ private:
       face_end();
       for(int c = 0; c < 3; ++c)
       {
-        const auto d = IO::internal::sub(m_data.points[t[(c + 1) % 3]], m_data.points[t[c]]);
-        edge_sum += std::sqrt(IO::internal::dot3(d, d));
+        edge_sum += internal::norm(m_data.points[t[(c + 1) % 3]] - m_data.points[t[c]]);
       }
     }
     const double glyph = m_data.faces.empty() ? 0. : 0.4 * edge_sum / (3. * m_data.faces.size());
     for(std::size_t v = 0; v < m_data.directions.size(); ++v)
       for(const auto& d : m_data.directions[v])
       {
-        if(IO::internal::dot3(d, d) == 0.) continue;
+        if(internal::dot(d, d) == 0.) continue;
         const auto& p = m_data.points[v];
         add_segment(point(p), point({p[0] + glyph * d[0], p[1] + glyph * d[1], p[2] + glyph * d[2]}),
                     CGAL::IO::Color(20, 20, 20));
@@ -132,7 +132,7 @@ private:
 
 } // namespace internal
 
-inline void draw_direction_field(const IO::Direction_field_data& data, const std::vector<Streamline>& streamlines,
+inline void draw_direction_field(const Direction_field_data& data, const std::vector<Streamline>& streamlines,
                                  const char* title = "Direction field")
 {
 #if defined(CGAL_TEST_SUITE)
@@ -158,8 +158,8 @@ void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const Sin
           const NamedParameters& np = parameters::default_values())
 {
   const int degree = parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree), 1);
-  const Surface_mesh_direction_fields::IO::Direction_field_data data =
-    Surface_mesh_direction_fields::IO::make_direction_field_data(tmesh, direction_map, degree, singularities, np);
+  const Surface_mesh_direction_fields::Direction_field_data data =
+    Surface_mesh_direction_fields::make_direction_field_data(tmesh, direction_map, degree, singularities, np);
   Surface_mesh_direction_fields::draw_direction_field(data, std::vector<Surface_mesh_direction_fields::Streamline>(),
                                                       "Direction field");
 }

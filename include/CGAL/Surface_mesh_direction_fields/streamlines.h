@@ -14,8 +14,9 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <algorithm>
 #include <array>
@@ -71,12 +72,10 @@ struct Streamline
 
 namespace internal {
 
-typedef std::array<double, 3> S3;
-
 // Across each edge (f, c) -- the side from faces[f][c] to faces[f][c+1] -- the
 // neighbouring face and its side index; (no face, 0) on a boundary or
 // non-manifold edge.
-inline std::vector<std::pair<std::size_t, int> > edge_neighbours(const IO::Direction_field_data& d)
+inline std::vector<std::pair<std::size_t, int> > edge_neighbours(const Direction_field_data& d)
 {
   const std::size_t none = static_cast<std::size_t>(-1);
   std::vector<std::pair<std::size_t, int> > result(3 * d.faces.size(), std::make_pair(none, 0));
@@ -96,13 +95,181 @@ inline std::vector<std::pair<std::size_t, int> > edge_neighbours(const IO::Direc
   return result;
 }
 
+// Traces the field lines of one Direction_field_data (see trace_streamlines()).
+class Streamline_tracer
+{
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  const Direction_field_data& m_data;
+  const int m_degree;
+  Vec3 m_low, m_high;
+  double m_diagonal = 0., m_spacing = 0., m_max_length = 0.;
+  std::vector<unsigned char> m_singular;
+  std::vector<std::pair<std::size_t, int> > m_neighbour;
+  std::vector<Vec3> m_normal;
+
+public:
+  Streamline_tracer(const Direction_field_data& data, const Streamline_options& options)
+    : m_data(data), m_degree(data.degree), m_low(data.points[0]), m_high(data.points[0])
+  {
+    for(const Vec3& p : data.points)
+      for(int k = 0; k < 3; ++k) { m_low[k] = (std::min)(m_low[k], p[k]); m_high[k] = (std::max)(m_high[k], p[k]); }
+    m_diagonal = norm(m_high - m_low);
+    m_spacing = options.seed_spacing * m_diagonal;
+    m_max_length = options.maximum_length * m_diagonal;
+    const std::size_t nf = data.faces.size();
+    m_singular.assign(nf, 0);
+    for(const auto& s : data.singularities) if(s.first < nf && s.second != 0) m_singular[s.first] = 1;
+    m_neighbour = edge_neighbours(data);
+    m_normal.resize(nf);
+    for(std::size_t f = 0; f < nf; ++f) m_normal[f] = triangle_unit_normal(data.points, data.faces[f]);
+  }
+
+  bool has_extent() const { return m_diagonal > 0.; }
+
+  // Seeds: the first face barycentre in each grid cell; from each, one line
+  // per direction family (both ways for even n and n = 1, forwards otherwise).
+  std::vector<Streamline> trace_all() const
+  {
+    std::vector<Streamline> lines;
+    std::unordered_map<long long, char> taken;
+    const int n = m_degree;
+    const int families = (n % 2 == 0) ? n / 2 : n;
+    for(std::size_t f = 0; f < m_data.faces.size(); ++f)
+    {
+      if(m_singular[f]) continue;
+      const Vec3 seed = barycentre(m_data.points, m_data.faces[f]);
+      if(!taken.emplace(cell_key(seed), 1).second) continue;
+      for(int family = 0; family < families; ++family)
+      {
+        Streamline line = line_through(f, seed, rotated(m_data.face_directions[f], m_normal[f], 2. * CGAL_PI * family / n));
+        if(line.points.size() >= 2) lines.push_back(std::move(line));
+      }
+    }
+    return lines;
+  }
+
+private:
+  long long cell_key(const Vec3& p) const
+  {
+    const long long i = static_cast<long long>(std::floor((p[0] - m_low[0]) / m_spacing));
+    const long long j = static_cast<long long>(std::floor((p[1] - m_low[1]) / m_spacing));
+    const long long k = static_cast<long long>(std::floor((p[2] - m_low[2]) / m_spacing));
+    return (i * 2097152LL + j) * 2097152LL + k;
+  }
+
+  // The line through the seed in face f along w: the backward half reversed,
+  // the seed, the forward half.
+  Streamline line_through(std::size_t f, const Vec3& seed, const Vec3& w) const
+  {
+    const bool both_ways = (m_degree % 2 == 0) || m_degree == 1;
+    Streamline line;
+    std::vector<Vec3> back_points;
+    std::vector<std::size_t> back_faces;
+    Streamline::End back_end = Streamline::End::LENGTH;
+    if(both_ways)
+      back_end = trace_half(f, seed, -1. * w, back_points, back_faces);
+    for(std::size_t i = back_points.size(); i-- > 0;)
+    {
+      line.points.push_back(back_points[i]);
+      line.faces.push_back(back_faces[i]);
+    }
+    line.points.push_back(seed);
+    std::vector<Vec3> forward_points;
+    std::vector<std::size_t> forward_faces;
+    const Streamline::End forward_end = trace_half(f, seed, w, forward_points, forward_faces);
+    line.points.insert(line.points.end(), forward_points.begin(), forward_points.end());
+    line.faces.insert(line.faces.end(), forward_faces.begin(), forward_faces.end());
+    line.start_end = both_ways ? back_end : Streamline::End::LENGTH;  // forwards only: the seed itself
+    line.finish_end = forward_end;
+    return line;
+  }
+
+  // The field direction of face f closest to w (w in the plane of f).
+  Vec3 closest_direction(std::size_t f, const Vec3& w) const
+  {
+    const Vec3& d = m_data.face_directions[f];
+    Vec3 best = d;
+    double best_dot = -2.;
+    for(int k = 0; k < m_degree; ++k)
+    {
+      const Vec3 dk = rotated(d, m_normal[f], 2. * CGAL_PI * k / m_degree);
+      if(dot(dk, w) > best_dot) { best_dot = dot(dk, w); best = dk; }
+    }
+    return best;
+  }
+
+  // Where the ray p + t w leaves face f through a side other than `entry`:
+  // that side (-1 if none) and t.
+  int exit_side(std::size_t f, const Vec3& p, const Vec3& w, int entry, double& exit_t) const
+  {
+    const auto& t = m_data.faces[f];
+    exit_t = HUGE_VAL;
+    int best_side = -1;
+    for(int c = 0; c < 3; ++c)
+    {
+      if(c == entry) continue;
+      const Vec3 a = m_data.points[t[static_cast<std::size_t>(c)]], b = m_data.points[t[static_cast<std::size_t>((c + 1) % 3)]];
+      // p + s w = a + r (b - a), in the face plane: 2x2 system by cross products with the normal
+      const Vec3 e = b - a, ap = a - p;
+      const double denominator = dot(cross(w, e), m_normal[f]);
+      if(std::abs(denominator) < 1e-300) continue;
+      const double s = dot(cross(ap, e), m_normal[f]) / denominator;
+      const double r = dot(cross(ap, w), m_normal[f]) / denominator;
+      if(s > 1e-12 * m_diagonal && r >= -1e-9 && r <= 1. + 1e-9 && s < exit_t) { exit_t = s; best_side = c; }
+    }
+    return best_side;
+  }
+
+  // Whether w points back out of face g across its side `side` (or along it).
+  bool turns_back(std::size_t g, int side, const Vec3& w) const
+  {
+    const auto& t = m_data.faces[g];
+    const Vec3 a = m_data.points[t[static_cast<std::size_t>(side)]];
+    const Vec3 b = m_data.points[t[static_cast<std::size_t>((side + 1) % 3)]];
+    const Vec3 inward = cross(m_normal[g], b - a);
+    return dot(w, inward) <= 1e-12 * norm(inward);
+  }
+
+  // One half line from point p in face f along w; appends to points/faces.
+  Streamline::End trace_half(std::size_t f, Vec3 p, Vec3 w, std::vector<Vec3>& points,
+                             std::vector<std::size_t>& faces) const
+  {
+    double length = 0.;
+    int entry = -1;  // the side through which the line entered f
+    const std::size_t max_steps = 4 * m_data.faces.size() + 16;
+    for(std::size_t step = 0; step < max_steps; ++step)
+    {
+      double exit_t = 0.;
+      const int side = exit_side(f, p, w, entry, exit_t);
+      if(side < 0) return Streamline::End::DEGENERATE;
+      const bool too_long = length + exit_t > m_max_length;
+      const double step_length = too_long ? m_max_length - length : exit_t;
+      const Vec3 q{p[0] + step_length * w[0], p[1] + step_length * w[1], p[2] + step_length * w[2]};
+      points.push_back(q);
+      faces.push_back(f);
+      length += step_length;
+      if(too_long) return Streamline::End::LENGTH;
+      const auto next = m_neighbour[3 * f + static_cast<std::size_t>(side)];
+      if(next.first == none) return Streamline::End::BOUNDARY;
+      if(m_singular[next.first]) return Streamline::End::SINGULARITY;
+      // unfold w into the next face, then follow its closest field direction
+      w = closest_direction(next.first, rotate_onto(w, m_normal[f], m_normal[next.first]));
+      if(turns_back(next.first, next.second, w)) return Streamline::End::TURNED_BACK;
+      p = q;
+      f = next.first;
+      entry = next.second;
+    }
+    return Streamline::End::LENGTH;
+  }
+};
+
 } // namespace internal
 
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
 traces field lines of the per-face field of `data` (`data.face_directions`,
-see `IO::face_directions()`): seeds at face barycentres spread by a grid of
+see `face_directions()`): seeds at face barycentres spread by a grid of
 spacing `options.seed_spacing`; from each seed, for a field of even degree `n`,
 one line along each of the `n/2` direction families, traced both ways; for
 `n = 1` one line, both ways; for odd `n > 1`, `n` lines, forwards.
@@ -122,144 +289,17 @@ skipped.
 \param options seed spacing and maximum length
 \returns the streamlines
 */
-inline std::vector<Streamline> trace_streamlines(const IO::Direction_field_data& data,
+inline std::vector<Streamline> trace_streamlines(const Direction_field_data& data,
                                                  const Streamline_options& options = Streamline_options())
 {
-  using namespace IO::internal;
-  typedef std::array<double, 3> V;
-  const std::size_t nf = data.faces.size(), none = static_cast<std::size_t>(-1);
-  std::vector<Streamline> lines;
-  if(nf == 0 || data.points.empty()) return lines;
-  if(data.face_directions.size() != nf)
+  if(data.faces.empty() || data.points.empty()) return std::vector<Streamline>();
+  if(data.face_directions.size() != data.faces.size())
     throw Invalid_input_error("trace_streamlines: the data has no per-face directions");
   if(!(options.seed_spacing > 0.) || !(options.maximum_length > 0.))
     throw Invalid_input_error("trace_streamlines: the seed spacing and the maximum length must be positive");
-
-  V lo = data.points[0], hi = data.points[0];
-  for(const V& p : data.points)
-    for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
-  const double diagonal = std::sqrt(dot3(sub(hi, lo), sub(hi, lo)));
-  if(!(diagonal > 0.)) return lines;
-  const double spacing = options.seed_spacing * diagonal, max_length = options.maximum_length * diagonal;
-
-  std::vector<unsigned char> singular(nf, 0);
-  for(const auto& s : data.singularities) if(s.first < nf && s.second != 0) singular[s.first] = 1;
-  const std::vector<std::pair<std::size_t, int> > neighbour = internal::edge_neighbours(data);
-  std::vector<V> normal(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    normal[f] = face_unit_normal(data.points, data.faces[f]);
-  }
-  const int n = data.degree;
-  // the field direction of face f closest to w (w in the plane of f)
-  auto closest_direction = [&](std::size_t f, const V& w) {
-    const V& d = data.face_directions[f];
-    V best = d;
-    double best_dot = -2.;
-    for(int k = 0; k < n; ++k)
-    {
-      const V dk = rotated(d, normal[f], 2. * CGAL_PI * k / n);
-      if(dot3(dk, w) > best_dot) { best_dot = dot3(dk, w); best = dk; }
-    }
-    return best;
-  };
-
-  // One half line from point p in face f along w; appends to points/faces.
-  auto trace = [&](std::size_t f, V p, V w, std::vector<V>& points, std::vector<std::size_t>& faces) {
-    double length = 0.;
-    int entry = -1;  // the side through which the line entered f
-    const std::size_t max_steps = 4 * nf + 16;
-    for(std::size_t step = 0; step < max_steps; ++step)
-    {
-      // exit of the ray p + t w through a side of f other than the entry one
-      const auto& t = data.faces[f];
-      double best_t = HUGE_VAL;
-      int best_side = -1;
-      for(int c = 0; c < 3; ++c)
-      {
-        if(c == entry) continue;
-        const V a = data.points[t[static_cast<std::size_t>(c)]], b = data.points[t[static_cast<std::size_t>((c + 1) % 3)]];
-        // p + s w = a + r (b - a), in the face plane: 2x2 system by cross products with the normal
-        const V e = sub(b, a), ap = sub(a, p);
-        const double denominator = dot3(cross3(w, e), normal[f]);
-        if(std::abs(denominator) < 1e-300) continue;
-        const double s = dot3(cross3(ap, e), normal[f]) / denominator;
-        const double r = dot3(cross3(ap, w), normal[f]) / denominator;
-        if(s > 1e-12 * diagonal && r >= -1e-9 && r <= 1. + 1e-9 && s < best_t) { best_t = s; best_side = c; }
-      }
-      if(best_side < 0) return Streamline::End::DEGENERATE;
-      const bool too_long = length + best_t > max_length;
-      const double step_length = too_long ? max_length - length : best_t;
-      const V q{p[0] + step_length * w[0], p[1] + step_length * w[1], p[2] + step_length * w[2]};
-      points.push_back(q);
-      faces.push_back(f);
-      length += step_length;
-      if(too_long) return Streamline::End::LENGTH;
-      const auto next = neighbour[3 * f + static_cast<std::size_t>(best_side)];
-      if(next.first == none) return Streamline::End::BOUNDARY;
-      if(singular[next.first]) return Streamline::End::SINGULARITY;
-      // unfold w into the next face, then follow its closest field direction
-      const V unfolded = rotate_onto(w, normal[f], normal[next.first]);
-      w = closest_direction(next.first, unfolded);
-      {
-        // the entry side of the next face, and the direction into that face
-        const auto& g = data.faces[next.first];
-        const V a = data.points[g[static_cast<std::size_t>(next.second)]];
-        const V b = data.points[g[static_cast<std::size_t>((next.second + 1) % 3)]];
-        const V inward = cross3(normal[next.first], sub(b, a));
-        if(dot3(w, inward) <= 1e-12 * std::sqrt(dot3(inward, inward)))
-          return Streamline::End::TURNED_BACK;
-      }
-      p = q;
-      f = next.first;
-      entry = next.second;
-    }
-    return Streamline::End::LENGTH;
-  };
-
-  // seeds: the first face barycentre in each grid cell
-  std::unordered_map<long long, char> taken;
-  auto cell_key = [&](const V& p) {
-    const long long i = static_cast<long long>(std::floor((p[0] - lo[0]) / spacing));
-    const long long j = static_cast<long long>(std::floor((p[1] - lo[1]) / spacing));
-    const long long k = static_cast<long long>(std::floor((p[2] - lo[2]) / spacing));
-    return (i * 2097152LL + j) * 2097152LL + k;
-  };
-  const bool both_ways = (n % 2 == 0) || n == 1;
-  const int families = (n % 2 == 0) ? n / 2 : n;
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    if(singular[f]) continue;
-    const V seed = barycentre(data.points, data.faces[f]);
-    if(!taken.emplace(cell_key(seed), 1).second) continue;
-    for(int family = 0; family < families; ++family)
-    {
-      const V w = rotated(data.face_directions[f], normal[f], 2. * CGAL_PI * family / n);
-      Streamline line;
-      std::vector<V> back_points;
-      std::vector<std::size_t> back_faces;
-      Streamline::End back_end = Streamline::End::LENGTH;
-      if(both_ways)
-        back_end = trace(f, seed, scaled(w, -1.), back_points, back_faces);
-      // the backward half, reversed, then the seed, then the forward half
-      for(std::size_t i = back_points.size(); i-- > 0;)
-      {
-        line.points.push_back(back_points[i]);
-        line.faces.push_back(back_faces[i]);
-      }
-      line.points.push_back(seed);
-      std::vector<V> forward_points;
-      std::vector<std::size_t> forward_faces;
-      const Streamline::End forward_end = trace(f, seed, w, forward_points, forward_faces);
-      line.points.insert(line.points.end(), forward_points.begin(), forward_points.end());
-      line.faces.insert(line.faces.end(), forward_faces.begin(), forward_faces.end());
-      line.start_end = both_ways ? back_end : Streamline::End::LENGTH;
-      line.finish_end = forward_end;
-      if(!both_ways) line.start_end = Streamline::End::LENGTH;  // the seed itself
-      if(line.points.size() >= 2) lines.push_back(std::move(line));
-    }
-  }
-  return lines;
+  const internal::Streamline_tracer tracer(data, options);
+  if(!tracer.has_extent()) return std::vector<Streamline>();
+  return tracer.trace_all();
 }
 
 /*!
@@ -291,7 +331,7 @@ PolylineOutputIterator trace_streamlines(const TriangleMesh& tmesh, VertexDirect
 {
   typedef typename boost::property_traits<
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
-  const IO::Direction_field_data data = IO::make_direction_field_data(tmesh, direction_map, degree, singularities);
+  const Direction_field_data data = make_direction_field_data(tmesh, direction_map, degree, singularities);
   for(const Streamline& line : trace_streamlines(data, options))
   {
     std::vector<Point> polyline;

@@ -14,7 +14,9 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -37,134 +39,7 @@
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
-namespace IO {
-
-/*!
-\ingroup PkgSurfaceMeshDirectionFieldsIO
-
-A direction field on a triangle mesh as stored in, or read from, the files of
-this package: plain arrays, independent of the mesh class, so that a file can be
-read back and compared without building a mesh.
-*/
-struct Direction_field_data
-{
-  /// a 3D vector or point
-  typedef std::array<double, 3> Vector;
-  /// the degree `n` of the field
-  int degree = 1;
-  /// vertex positions
-  std::vector<Vector> points;
-  /// triangles, as indices into `points`
-  std::vector<std::array<std::size_t, 3> > faces;
-  /// per vertex, its `n` unit directions (the `k`-th is the first rotated by \f$ 2\pi k / n \f$ about the normal)
-  std::vector<std::vector<Vector> > directions;
-  /// per vertex, the unit normal about which its directions turn (orthogonal to them)
-  std::vector<Vector> normals;
-  /// per vertex, the magnitude \f$ |u| \f$ (empty if the file has none)
-  std::vector<double> magnitudes;
-  /// per face, one unit direction (the per-face files); the others are its rotations in the face plane
-  std::vector<Vector> face_directions;
-  /// singular faces: face index and integer `k` (the index is `k / n`)
-  std::vector<std::pair<std::size_t, int> > singularities;
-  /// the barycentre of each singular face, in the order of `singularities`
-  std::vector<Vector> singularity_points;
-};
-
-inline std::vector<std::array<double, 3> > face_directions(const Direction_field_data& data);
-
 namespace internal {
-
-typedef std::array<double, 3> V3;
-inline V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline V3 cross3(const V3& a, const V3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline V3 scaled(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-inline V3 unit(const V3& a)
-{
-  const double l = std::sqrt(dot3(a, a));
-  return l > 0. ? scaled(a, 1. / l) : V3{0., 0., 0.};
-}
-
-// d rotated by angle about the unit axis n (d orthogonal to n).
-inline V3 rotated(const V3& d, const V3& n, double angle)
-{
-  const V3 nd = cross3(n, d);
-  return {std::cos(angle) * d[0] + std::sin(angle) * nd[0], std::cos(angle) * d[1] + std::sin(angle) * nd[1],
-          std::cos(angle) * d[2] + std::sin(angle) * nd[2]};
-}
-
-typedef std::array<std::size_t, 3> Triangle;
-
-inline V3 barycentre(const std::vector<V3>& points, const Triangle& t)
-{
-  V3 b{0., 0., 0.};
-  for(std::size_t c : t) for(int i = 0; i < 3; ++i) b[i] += points[c][i] / 3.;
-  return b;
-}
-
-// The unit normal of a counter-clockwise triangle.
-inline V3 face_unit_normal(const std::vector<V3>& points, const Triangle& t)
-{
-  return unit(cross3(sub(points[t[1]], points[t[0]]), sub(points[t[2]], points[t[0]])));
-}
-
-// The minimal rotation taking the unit vector a to the unit vector b, applied to v.
-inline V3 rotate_onto(const V3& v, const V3& a, const V3& b)
-{
-  const V3 axis = cross3(a, b);
-  const double s = std::sqrt(dot3(axis, axis)), c = dot3(a, b);
-  if(s < 1e-15) return v;  // a = b (or a fold, a = -b: no meaningful rotation)
-  const V3 k = scaled(axis, 1. / s);
-  const V3 kv = cross3(k, v);
-  const double kd = dot3(k, v) * (1. - c);
-  return {v[0] * c + kv[0] * s + k[0] * kd, v[1] * c + kv[1] * s + k[1] * kd, v[2] * c + kv[2] * s + k[2] * kd};
-}
-
-// Vertex normals: the incident face normals weighted by their corner angles
-// (the normals of compute_globally_optimal_directions()).
-inline std::vector<V3> angle_weighted_normals(const std::vector<V3>& points,
-                                              const std::vector<std::array<std::size_t, 3> >& faces)
-{
-  std::vector<V3> normal(points.size(), V3{0., 0., 0.});
-  for(const auto& t : faces)
-  {
-    const V3 n = face_unit_normal(points, t);
-    for(int c = 0; c < 3; ++c)
-    {
-      const V3 a = sub(points[t[(c + 1) % 3]], points[t[c]]);
-      const V3 b = sub(points[t[(c + 2) % 3]], points[t[c]]);
-      const double angle = std::atan2(std::sqrt(dot3(cross3(a, b), cross3(a, b))), dot3(a, b));
-      for(int i = 0; i < 3; ++i) normal[t[c]][i] += angle * n[i];
-    }
-  }
-  for(V3& n : normal) n = unit(n);
-  return normal;
-}
-
-// Normals made orthogonal to each vertex's first direction, and the n
-// directions as rotations of the first one about them.
-inline void complete_directions(Direction_field_data& data, std::vector<V3> normal, const std::vector<V3>& first)
-{
-  const std::size_t nv = first.size();
-  data.normals.resize(nv);
-  data.directions.assign(nv, std::vector<V3>(static_cast<std::size_t>(data.degree)));
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    const V3 n = unit(sub(normal[v], scaled(first[v], dot3(normal[v], first[v]))));
-    data.normals[v] = n;
-    for(int k = 0; k < data.degree; ++k)
-      data.directions[v][static_cast<std::size_t>(k)] = rotated(first[v], n, 2. * CGAL_PI * k / data.degree);
-  }
-}
-
-inline void check_degree(int degree)
-{
-  if(degree < 1)
-    throw Invalid_input_error("the degree n must be at least 1 (got " + std::to_string(degree) + ")");
-}
 
 // Reads the next token, or throws with the file kind in the message.
 inline std::string next_token(std::istream& is, const char* kind)
@@ -203,149 +78,164 @@ inline void expect(std::istream& is, const std::string& word, const char* kind)
     throw Invalid_input_error(std::string(kind) + " file: expected '" + word + "', found '" + t + "'");
 }
 
+// The pieces of IO::read_VTK(), in the order of the file.
+
+inline int read_VTK_degree(std::istream& is)
+{
+  std::string line;
+  std::getline(is, line);
+  if(line.rfind("# vtk DataFile", 0) != 0) throw Invalid_input_error("not a legacy VTK file");
+  std::getline(is, line);
+  const std::string key = "direction field of degree ";
+  if(line.rfind(key, 0) != 0) throw Invalid_input_error("VTK file: not written by write_VTK()");
+  std::istringstream ls(line.substr(key.size()));
+  std::string word;
+  ls >> word;
+  const int degree = parse_value<int>(word, "VTK");
+  check_degree(degree);
+  return degree;
+}
+
+struct VTK_cells
+{
+  std::size_t points = 0, singularities = 0, faces = 0;
+};
+
+// POINTS, the VERTICES of the singularities and the triangles (POLYGONS):
+// data.points, data.singularity_points and data.faces.
+inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
+{
+  const char* kind = "VTK";
+  expect(is, "ASCII", kind);
+  expect(is, "DATASET", kind);
+  expect(is, "POLYDATA", kind);
+  expect(is, "POINTS", kind);
+  VTK_cells cells;
+  cells.points = next_value<std::size_t>(is, kind);
+  if(cells.points > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
+  next_token(is, kind);  // type
+  std::vector<Vec3> points(cells.points);
+  for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
+  std::string word = next_token(is, kind);
+  if(word == "VERTICES")
+  {
+    cells.singularities = next_value<std::size_t>(is, kind);
+    next_value<std::size_t>(is, kind);
+    for(std::size_t i = 0; i < 2 * cells.singularities; ++i) next_value<std::size_t>(is, kind);
+    word = next_token(is, kind);
+  }
+  if(word != "POLYGONS") throw Invalid_input_error("VTK file: expected POLYGONS");
+  cells.faces = next_value<std::size_t>(is, kind);
+  next_value<std::size_t>(is, kind);
+  if(cells.singularities > cells.points) throw Invalid_input_error("VTK file: more singularities than points");
+  const std::size_t nv = cells.points - cells.singularities;
+  data.points.assign(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(nv));
+  data.singularity_points.assign(points.begin() + static_cast<std::ptrdiff_t>(nv), points.end());
+  data.faces.resize(cells.faces);
+  for(auto& t : data.faces)
+  {
+    if(next_value<int>(is, kind) != 3) throw Invalid_input_error("VTK file: a polygon is not a triangle");
+    for(auto& c : t)
+    {
+      c = next_value<std::size_t>(is, kind);
+      if(c >= nv) throw Invalid_input_error("VTK file: a vertex index is out of range");
+    }
+  }
+  return cells;
+}
+
+// The SCALARS block named `name` (its header read up to the name): the
+// magnitudes of the mesh's points, or the indices of the singularity cells.
+inline void read_VTK_scalars(std::istream& is, const std::string& name, const VTK_cells& cells,
+                             Direction_field_data& data, std::vector<double>& singularity_values)
+{
+  const char* kind = "VTK";
+  const std::size_t nv = cells.points - cells.singularities;
+  next_token(is, kind);
+  next_token(is, kind);
+  expect(is, "LOOKUP_TABLE", kind);
+  next_token(is, kind);
+  if(name == "magnitude")
+  {
+    data.magnitudes.resize(nv);
+    for(std::size_t v = 0; v < cells.points; ++v)
+    {
+      const double m = next_value<double>(is, kind);
+      if(v < nv) data.magnitudes[v] = m;
+    }
+  }
+  else if(name == "singularity_index")
+  {
+    for(std::size_t c = 0; c < cells.singularities + cells.faces; ++c)
+    {
+      const double value = next_value<double>(is, kind);
+      if(c < cells.singularities) singularity_values.push_back(value);
+    }
+  }
+  else throw Invalid_input_error("VTK file: unexpected data " + name);
+}
+
+// POINT_DATA and CELL_DATA: the directions, the magnitudes, and the index of
+// each singularity cell (returned).
+inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cells, Direction_field_data& data)
+{
+  const char* kind = "VTK";
+  const std::size_t nv = cells.points - cells.singularities;
+  expect(is, "POINT_DATA", kind);
+  next_value<std::size_t>(is, kind);
+  data.directions.assign(nv, std::vector<Vec3>(static_cast<std::size_t>(data.degree)));
+  std::vector<double> singularity_values;
+  std::string word;
+  while(is >> word)
+  {
+    if(word == "VECTORS")
+    {
+      const std::string name = next_token(is, kind);
+      next_token(is, kind);
+      const int k = parse_value<int>(name.substr(name.find('_') + 1), kind);
+      if(k < 0 || k >= data.degree) throw Invalid_input_error("VTK file: unexpected " + name);
+      for(std::size_t v = 0; v < cells.points; ++v)
+      {
+        Vec3 d;
+        for(double& x : d) x = next_value<double>(is, kind);
+        if(v < nv) data.directions[v][static_cast<std::size_t>(k)] = d;
+      }
+    }
+    else if(word == "SCALARS")
+      read_VTK_scalars(is, next_token(is, kind), cells, data, singularity_values);
+    else if(word == "CELL_DATA")
+      next_value<std::size_t>(is, kind);
+    else
+      throw Invalid_input_error("VTK file: unexpected '" + word + "'");
+  }
+  return singularity_values;
+}
+
+// The singular faces: the face whose barycentre is the singularity point
+// (write_VTK() writes it from there).
+inline void match_singular_faces(const std::vector<double>& singularity_values, Direction_field_data& data)
+{
+  const std::size_t ns = data.singularity_points.size();
+  std::vector<Vec3> centres;
+  if(ns > 0)
+    for(const auto& t : data.faces) centres.push_back(barycentre(data.points, t));
+  for(std::size_t i = 0; i < ns; ++i)
+  {
+    std::size_t best = 0;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < data.faces.size(); ++f)
+    {
+      const Vec3 d = centres[f] - data.singularity_points[i];
+      if(dot(d, d) < best_distance) { best_distance = dot(d, d); best = f; }
+    }
+    if(i >= singularity_values.size()) throw Invalid_input_error("VTK file: no singularity_index for a singularity point");
+    data.singularities.emplace_back(best, static_cast<int>(std::lround(singularity_values[i] * data.degree)));
+  }
+}
+
 } // namespace internal
 
-/*!
-\ingroup PkgSurfaceMeshDirectionFieldsIO
-
-collects a direction field computed on `tmesh` into a `Direction_field_data`:
-the points and triangles of the mesh (in the order of its vertex and face
-indices), all `n` directions of each vertex, the magnitudes if a
-`vertex_magnitude_map` is given, the per-face directions (see
-`face_directions()`) and the singularities with their barycentres.
-
-The `n` directions of vertex `v` are `d` and its rotations by
-\f$ 2\pi k / n \f$ about the unit normal made orthogonal to `d`
-(`vertex_normal_map`, by default the normalized sum of the incident face
-normals weighted by their corner angles, as used by
-`compute_globally_optimal_directions()`).
-
-\tparam TriangleMesh a model of `FaceListGraph`
-\tparam VertexDirectionMap a `ReadablePropertyMap` from vertices to a 3D vector type with `x()`, `y()`, `z()`
-\tparam SingularityRange a range of `std::pair<face_descriptor, int>`, as given by `singularities_output_iterator`
-
-\param tmesh the mesh
-\param direction_map the first direction of each vertex
-\param degree the degree `n` of the field
-\param singularities the singular faces and their integers `k`
-\param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`,
-       `vertex_normal_map`, `vertex_magnitude_map`
-\returns the field as plain arrays
-*/
-template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-Direction_field_data make_direction_field_data(const TriangleMesh& tmesh, VertexDirectionMap direction_map, int degree,
-                                               const SingularityRange& singularities,
-                                               const NamedParameters& np = parameters::default_values())
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  using namespace internal;
-  internal::check_degree(degree);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tmesh));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
-  auto to_v3 = [](const auto& p) {
-    return V3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-
-  Direction_field_data data;
-  data.degree = degree;
-  const std::size_t nv = static_cast<std::size_t>(num_vertices(tmesh));
-  data.points.resize(nv);
-  for(auto v : vertices(tmesh)) data.points[static_cast<std::size_t>(get(vim, v))] = to_v3(get(vpm, v));
-  data.faces.resize(static_cast<std::size_t>(num_faces(tmesh)));
-  for(auto f : faces(tmesh))
-  {
-    auto& t = data.faces[static_cast<std::size_t>(get(fim, f))];
-    int c = 0;
-    for(auto v : vertices_around_face(halfedge(f, tmesh), tmesh))
-    {
-      if(c == 3) throw Invalid_input_error("the mesh has a face that is not a triangle");
-      t[static_cast<std::size_t>(c++)] = static_cast<std::size_t>(get(vim, v));
-    }
-    if(c != 3) throw Invalid_input_error("the mesh has a face that is not a triangle");
-  }
-
-  // normals: given, or angle-weighted face normals
-  std::vector<V3> normal;
-  if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value)
-  {
-    const auto vnm = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-    normal.resize(nv);
-    for(auto v : vertices(tmesh)) normal[static_cast<std::size_t>(get(vim, v))] = to_v3(get(vnm, v));
-  }
-  else
-    normal = angle_weighted_normals(data.points, data.faces);
-  std::vector<V3> first(nv);
-  for(auto v : vertices(tmesh)) first[static_cast<std::size_t>(get(vim, v))] = to_v3(get(direction_map, v));
-  complete_directions(data, normal, first);
-  if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::vertex_magnitude_map_t>::value)
-  {
-    const auto vmm = get_parameter(np, CGAL::internal_np::vertex_magnitude_map);
-    data.magnitudes.resize(nv);
-    for(auto v : vertices(tmesh)) data.magnitudes[static_cast<std::size_t>(get(vim, v))] = CGAL::to_double(get(vmm, v));
-  }
-  for(const auto& fk : singularities)
-  {
-    const std::size_t f = static_cast<std::size_t>(get(fim, fk.first));
-    data.singularities.emplace_back(f, fk.second);
-    data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
-  }
-  data.face_directions = face_directions(data);
-  return data;
-}
-
-/*!
-\ingroup PkgSurfaceMeshDirectionFieldsIO
-
-transfers the field from the vertices to the faces (for the per-face formats
-of quad-meshing pipelines). The rule: in the plane of face `f`, with angles
-measured from its first edge, each of its three vertices contributes the
-unit complex number \f$ e^{\mathrm{i} n \varphi_v} \f$, where \f$ \varphi_v \f$ is
-the angle of its first direction projected onto the plane; the face's
-direction is at angle \f$ \arg(\sum_v e^{\mathrm{i} n \varphi_v}) / n \f$. Taking
-`n`-th powers makes the rule independent of which of its `n` directions a
-vertex lists first, so no matching is needed; each vertex's direction is
-first turned from its tangent plane onto the face plane by the smallest
-rotation taking its normal (`data.normals`) to the face normal, so that the
-rule is exactly invariant under the rotations of a vertex's directions. In a singular face the three
-powers nearly cancel and the face's direction is not meaningful.
-
-\param data the field with its mesh (`points`, `faces`, `directions`, `normals`)
-\returns one unit direction per face, in the face plane
-*/
-inline std::vector<std::array<double, 3> > face_directions(const Direction_field_data& data)
-{
-  using namespace internal;
-  std::vector<V3> result(data.faces.size(), V3{0., 0., 0.});
-  const int n = data.degree;
-  const bool has_normals = data.normals.size() == data.points.size();
-  for(std::size_t f = 0; f < data.faces.size(); ++f)
-  {
-    const auto& t = data.faces[f];
-    const V3 e = unit(sub(data.points[t[1]], data.points[t[0]]));
-    const V3 normal = face_unit_normal(data.points, t);
-    const V3 e_perp = cross3(normal, e);
-    std::complex<double> sum(0., 0.);
-    for(std::size_t v : t)
-    {
-      if(data.directions[v].empty()) continue;
-      // the vertex's tangent plane turned onto the face's plane: rotations
-      // about the vertex normal become rotations about the face normal
-      const V3 d = has_normals ? rotate_onto(data.directions[v][0], data.normals[v], normal) : data.directions[v][0];
-      const double phi = std::atan2(dot3(d, e_perp), dot3(d, e));
-      if(dot3(d, d) > 0.) sum += std::polar(1., n * phi);
-    }
-    const double angle = std::arg(sum) / n;
-    result[f] = V3{std::cos(angle) * e[0] + std::sin(angle) * e_perp[0],
-                   std::cos(angle) * e[1] + std::sin(angle) * e_perp[1],
-                   std::cos(angle) * e[2] + std::sin(angle) * e_perp[2]};
-  }
-  return result;
-}
+namespace IO {
 
 /// \name VTK
 /// @{
@@ -418,131 +308,21 @@ written from it); the per-face directions are recomputed by
 */
 inline Direction_field_data read_VTK(std::istream& is)
 {
-  using namespace internal;
-  const char* kind = "VTK";
   Direction_field_data data;
-  std::string line;
-  std::getline(is, line);
-  if(line.rfind("# vtk DataFile", 0) != 0) throw Invalid_input_error("not a legacy VTK file");
-  std::getline(is, line);
-  const std::string key = "direction field of degree ";
-  if(line.rfind(key, 0) != 0) throw Invalid_input_error("VTK file: not written by write_VTK()");
-  {
-    std::istringstream ls(line.substr(key.size()));
-    std::string word;
-    ls >> word;
-    data.degree = parse_value<int>(word, kind);
-  }
-  check_degree(data.degree);
-  expect(is, "ASCII", kind);
-  expect(is, "DATASET", kind);
-  expect(is, "POLYDATA", kind);
-  expect(is, "POINTS", kind);
-  const std::size_t np = next_value<std::size_t>(is, kind);
-  if(np > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
-  next_token(is, kind);  // type
-  std::vector<V3> points(np);
-  for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
-  std::size_t ns = 0, nf = 0;
-  std::string word = next_token(is, kind);
-  if(word == "VERTICES")
-  {
-    ns = next_value<std::size_t>(is, kind);
-    next_value<std::size_t>(is, kind);
-    for(std::size_t i = 0; i < 2 * ns; ++i) next_value<std::size_t>(is, kind);
-    word = next_token(is, kind);
-  }
-  if(word != "POLYGONS") throw Invalid_input_error("VTK file: expected POLYGONS");
-  nf = next_value<std::size_t>(is, kind);
-  next_value<std::size_t>(is, kind);
-  if(ns > np) throw Invalid_input_error("VTK file: more singularities than points");
-  const std::size_t nv = np - ns;
-  data.points.assign(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(nv));
-  data.singularity_points.assign(points.begin() + static_cast<std::ptrdiff_t>(nv), points.end());
-  data.faces.resize(nf);
-  for(auto& t : data.faces)
-  {
-    if(next_value<int>(is, kind) != 3) throw Invalid_input_error("VTK file: a polygon is not a triangle");
-    for(auto& c : t)
-    {
-      c = next_value<std::size_t>(is, kind);
-      if(c >= nv) throw Invalid_input_error("VTK file: a vertex index is out of range");
-    }
-  }
-  expect(is, "POINT_DATA", kind);
-  next_value<std::size_t>(is, kind);
-  data.directions.assign(nv, std::vector<V3>(static_cast<std::size_t>(data.degree)));
-  std::vector<double> singularity_values;
-  while(is >> word)
-  {
-    if(word == "VECTORS")
-    {
-      const std::string name = next_token(is, kind);
-      next_token(is, kind);
-      const int k = parse_value<int>(name.substr(name.find('_') + 1), kind);
-      if(k < 0 || k >= data.degree) throw Invalid_input_error("VTK file: unexpected " + name);
-      for(std::size_t v = 0; v < np; ++v)
-      {
-        V3 d;
-        for(double& x : d) x = next_value<double>(is, kind);
-        if(v < nv) data.directions[v][static_cast<std::size_t>(k)] = d;
-      }
-    }
-    else if(word == "SCALARS")
-    {
-      const std::string name = next_token(is, kind);
-      next_token(is, kind);
-      next_token(is, kind);
-      expect(is, "LOOKUP_TABLE", kind);
-      next_token(is, kind);
-      if(name == "magnitude")
-      {
-        data.magnitudes.resize(nv);
-        for(std::size_t v = 0; v < np; ++v)
-        {
-          const double m = next_value<double>(is, kind);
-          if(v < nv) data.magnitudes[v] = m;
-        }
-      }
-      else if(name == "singularity_index")
-      {
-        for(std::size_t c = 0; c < ns + nf; ++c)
-        {
-          const double value = next_value<double>(is, kind);
-          if(c < ns) singularity_values.push_back(value);
-        }
-      }
-      else throw Invalid_input_error("VTK file: unexpected data " + name);
-    }
-    else if(word == "CELL_DATA")
-      next_value<std::size_t>(is, kind);
-    else
-      throw Invalid_input_error("VTK file: unexpected '" + word + "'");
-  }
+  data.degree = internal::read_VTK_degree(is);
+  const internal::VTK_cells cells = internal::read_VTK_geometry(is, data);
+  const std::vector<double> singularity_values = internal::read_VTK_data(is, cells, data);
   // the normals (not stored in the file): angle-weighted, orthogonal to d_0
-  const std::vector<V3> normal = angle_weighted_normals(data.points, data.faces);
-  data.normals.resize(nv);
-  for(std::size_t v = 0; v < nv; ++v)
+  using internal::operator-;
+  using internal::operator*;
+  const std::vector<internal::Vec3> normal = internal::angle_weighted_normals(data.points, data.faces);
+  data.normals.resize(data.points.size());
+  for(std::size_t v = 0; v < data.points.size(); ++v)
   {
-    const V3& d = data.directions[v][0];
-    data.normals[v] = unit(sub(normal[v], scaled(d, dot3(normal[v], d))));
+    const internal::Vec3& d = data.directions[v][0];
+    data.normals[v] = internal::normalized(normal[v] - internal::dot(normal[v], d) * d);
   }
-  // singular faces: the face whose barycentre is the singularity point
-  std::vector<V3> centres;
-  if(ns > 0)
-    for(const auto& t : data.faces) centres.push_back(barycentre(data.points, t));
-  for(std::size_t i = 0; i < ns; ++i)
-  {
-    std::size_t best = 0;
-    double best_distance = std::numeric_limits<double>::infinity();
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      const V3 d = sub(centres[f], data.singularity_points[i]);
-      if(dot3(d, d) < best_distance) { best_distance = dot3(d, d); best = f; }
-    }
-    if(i >= singularity_values.size()) throw Invalid_input_error("VTK file: no singularity_index for a singularity point");
-    data.singularities.emplace_back(best, static_cast<int>(std::lround(singularity_values[i] * data.degree)));
-  }
+  internal::match_singular_faces(singularity_values, data);
   data.face_directions = face_directions(data);
   return data;
 }
@@ -605,7 +385,8 @@ normal of the file's mesh (as `make_direction_field_data()` does).
 */
 inline Direction_field_data read_PLY(std::istream& is)
 {
-  using namespace internal;
+  using internal::next_value;
+  using internal::parse_value;
   const char* kind = "PLY";
   Direction_field_data data;
   std::string line;
@@ -627,9 +408,9 @@ inline Direction_field_data read_PLY(std::istream& is)
   if(!degree_found) throw Invalid_input_error("PLY file: no 'comment direction_field_degree'");
   if(nv > (std::size_t(1) << 32) || nf > (std::size_t(1) << 32))
     throw Invalid_input_error("PLY file: implausible element count");
-  check_degree(data.degree);
+  internal::check_degree(data.degree);
   data.points.resize(nv);
-  std::vector<V3> first(nv);
+  std::vector<internal::Vec3> first(nv);
   if(has_magnitude) data.magnitudes.resize(nv);
   for(std::size_t v = 0; v < nv; ++v)
   {
@@ -650,11 +431,11 @@ inline Direction_field_data read_PLY(std::istream& is)
     if(k != 0)
     {
       data.singularities.emplace_back(f, k);
-      data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
+      data.singularity_points.push_back(internal::barycentre(data.points, data.faces[f]));
     }
   }
   // the other directions: rotations about the angle-weighted normal
-  complete_directions(data, angle_weighted_normals(data.points, data.faces), first);
+  internal::complete_directions(data, internal::angle_weighted_normals(data.points, data.faces), first);
   data.face_directions = face_directions(data);
   return data;
 }
@@ -693,14 +474,14 @@ mesh must have as many faces as the file).
 */
 inline void read_rosy(std::istream& is, Direction_field_data& data)
 {
-  using namespace internal;
+  using internal::next_value;
   const std::size_t nf = next_value<std::size_t>(is, "rosy");
   if(!data.faces.empty() && nf != data.faces.size())
     throw Invalid_input_error("rosy file: " + std::to_string(nf) + " faces for a mesh of " +
                               std::to_string(data.faces.size()));
   if(nf > (std::size_t(1) << 32)) throw Invalid_input_error("rosy file: implausible face count");
   data.degree = next_value<int>(is, "rosy");
-  check_degree(data.degree);
+  internal::check_degree(data.degree);
   data.face_directions.resize(nf);
   for(auto& d : data.face_directions) for(double& x : d) x = next_value<double>(is, "rosy");
 }
@@ -720,7 +501,7 @@ rotation by \f$ 90^\circ \f$ in the face plane. This describes the field exactly
 */
 inline void write_ffield(std::ostream& os, const Direction_field_data& data)
 {
-  using namespace internal;
+  using internal::Vec3;
   os << std::setprecision(17);
   os << "# frame generated by CGAL Surface_mesh_direction_fields, degree " << data.degree << "\n"
      << "target frame\n" << data.faces.size() << "\n"
@@ -728,9 +509,9 @@ inline void write_ffield(std::ostream& os, const Direction_field_data& data)
   for(std::size_t f = 0; f < data.faces.size(); ++f)
   {
     const auto& t = data.faces[f];
-    const V3 normal = face_unit_normal(data.points, t);
-    const V3& u = data.face_directions[f];
-    const V3 w = cross3(normal, u);
+    const Vec3 normal = internal::triangle_unit_normal(data.points, t);
+    const Vec3& u = data.face_directions[f];
+    const Vec3 w = internal::cross(normal, u);
     os << "1 1 " << u[0] << " " << u[1] << " " << u[2] << " " << w[0] << " " << w[1] << " " << w[2] << "\n";
   }
 }
@@ -747,7 +528,7 @@ of each face (normalized).
 */
 inline void read_ffield(std::istream& is, Direction_field_data& data)
 {
-  using namespace internal;
+  using internal::next_value;
   std::string line;
   if(!std::getline(is, line) || line.empty() || line[0] != '#') throw Invalid_input_error("not an ffield file");
   std::getline(is, line);  // "target frame"
@@ -765,7 +546,7 @@ inline void read_ffield(std::istream& is, Direction_field_data& data)
     next_value<double>(is, "ffield");
     for(double& x : d) x = next_value<double>(is, "ffield");
     for(int i = 0; i < 3; ++i) next_value<double>(is, "ffield");
-    d = unit(d);
+    d = internal::normalized(d);
   }
 }
 

@@ -18,6 +18,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 // Small double-precision 3-vectors, and the reduction of angles. All linear
 // algebra of the package runs in double whatever the kernel: coordinates are
@@ -40,21 +42,51 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double squared_norm(const Vec3& a) { return dot(a, a); }
-// a / |a|, or a itself when it is the zero vector
+// a / |a|; a itself if |a| is not positive (the zero vector stays zero)
 inline Vec3 normalized(const Vec3& a)
 {
   const double l = norm(a);
   return l > 0. ? (1. / l) * a : a;
 }
 
-// x reduced to (-pi, pi] by subtracting the nearest multiple of 2 pi, found
-// by truncation (which does not depend on the rounding mode), instead of
-// std::remainder, which took a quarter of the time of the face indices and a
-// tenth of the connection's. Every operation in it is odd (x / c, adding
-// sign(y) / 2, truncation, k c and x - k c, fused or not, change sign exactly
-// with x), so reduce_angle(-x) = -reduce_angle(x) bit for bit. (Where x / 2 pi
-// is within an ulp of a half, the result may fall just outside (-pi, pi]; it
-// is still congruent to x and odd in x.)
+// The unit normal of the triangle t of `points`, counter-clockwise (zero for a
+// degenerate triangle).
+template <typename Triangle>
+Vec3 triangle_unit_normal(const std::vector<Vec3>& points, const Triangle& t)
+{
+  return normalized(cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]]));
+}
+
+template <typename Triangle>
+Vec3 barycentre(const std::vector<Vec3>& points, const Triangle& t)
+{
+  Vec3 b{0., 0., 0.};
+  for(int c = 0; c < 3; ++c)
+    for(int i = 0; i < 3; ++i) b[i] += points[t[c]][i] / 3.;
+  return b;
+}
+
+// d rotated by `angle` about the unit axis n (d orthogonal to n).
+inline Vec3 rotated(const Vec3& d, const Vec3& n, double angle)
+{
+  const Vec3 nd = cross(n, d);
+  return {std::cos(angle) * d[0] + std::sin(angle) * nd[0], std::cos(angle) * d[1] + std::sin(angle) * nd[1],
+          std::cos(angle) * d[2] + std::sin(angle) * nd[2]};
+}
+
+// The smallest rotation taking the unit vector a to the unit vector b, applied
+// to v (v itself when a = b, or a = -b, where no rotation is the smallest).
+inline Vec3 rotate_onto(const Vec3& v, const Vec3& a, const Vec3& b)
+{
+  const Vec3 axis = cross(a, b);
+  const double s = norm(axis), c = dot(a, b);
+  if(s < 1e-15) return v;
+  const Vec3 k = (1. / s) * axis;
+  const Vec3 kv = cross(k, v);
+  const double kd = dot(k, v) * (1. - c);
+  return {v[0] * c + kv[0] * s + k[0] * kd, v[1] * c + kv[1] * s + k[1] * kd, v[2] * c + kv[2] * s + k[2] * kd};
+}
+
 inline double reduce_angle(double x)
 {
   const double two_pi = 2. * CGAL_PI;

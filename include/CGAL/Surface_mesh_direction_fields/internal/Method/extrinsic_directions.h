@@ -9,15 +9,16 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_EXTRINSIC_DIRECTIONS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_EXTRINSIC_DIRECTIONS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vertex_normals.h>
 
 #include <cmath>
 #include <complex>
@@ -43,25 +44,12 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-// Each vertex gathers over its own fan (in parallel), recomputing the normals
-// of its faces: cheaper than storing them, and no two vertices write to the
-// same place.
+// The package's vertex normals (vertex_normals.h) over the mesh's fans, with
+// the (possibly mollified) corner angles of the tangent spaces.
 inline std::vector<Vec3> angle_weighted_vertex_normals(const Indexed_mesh& m, const Tangent_spaces& ts)
 {
-  std::vector<Vec3> normals(m.number_of_vertices());
-  parallel_for_each_index(m.number_of_vertices(), [&](std::size_t v) {
-    Vec3 sum{0., 0., 0.};
-    for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
-    {
-      const std::size_t corner = m.fan_corners[k];
-      const auto& t = m.faces[corner / 3];
-      const Vec3 nf = normalized(cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]));
-      // (a degenerate face, mollified, has no normal and adds nothing)
-      sum = sum + ts.corner_angle[corner] * nf;
-    }
-    normals[v] = normalized(sum);
-  });
-  return normals;
+  return angle_weighted_vertex_normals(m.points, m.faces, [&m](std::size_t v) { return m.fan(v); },
+                                       [&ts](std::size_t corner) { return ts.corner_angle[corner]; });
 }
 
 // Unit vector in the plane of corner `corner`, at Euclidean angle `psi` from
@@ -147,4 +135,4 @@ inline Vec3 tangent_direction(const Indexed_mesh& m, const Tangent_spaces& ts, s
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EXTRINSIC_DIRECTIONS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_EXTRINSIC_DIRECTIONS_H

@@ -9,14 +9,17 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_GUIDANCE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_GUIDANCE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/extrinsic_directions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <cmath>
@@ -64,6 +67,31 @@ inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexe
     q[m.vertex_of_corner(corner)] += -0.25 * beta * length * std::polar(1., 2. * ts.corner_theta[corner]);
   }
   return q;
+}
+
+// The principal-curvature line field (n = 2) of every component: the Hopf
+// differential's coefficients q solve M_2 q = q~, with q~ its pairing above
+// and M_2 the mass matrix of the degree-2 connection (user manual, section
+// "Aligned Fields").
+template <typename SparseSolver>
+std::vector<std::complex<double> > curvature_line_field(const Indexed_mesh& mesh, const Tangent_spaces& ts,
+                                                        const Components& components, SparseSolver& solver)
+{
+  const std::vector<Complex> pairing = hopf_differential_pairing(mesh, ts);
+  const Connection line_connection = compute_connection(mesh, ts, 2);
+  std::vector<Complex> line(mesh.number_of_vertices(), Complex(0., 0.));
+  const std::vector<Energy_and_mass> line_matrices = assemble_energy_and_mass(mesh, ts, line_connection, components, 0.);
+  for(std::size_t c = 0; c < components.list.size(); ++c)
+  {
+    const Component& comp = components.list[c];
+    const Energy_and_mass& em = line_matrices[c];
+    Complex_vector rhs(static_cast<Eigen::Index>(comp.vertices.size()));
+    for(std::size_t i = 0; i < comp.vertices.size(); ++i) rhs[static_cast<Eigen::Index>(i)] = pairing[comp.vertices[i]];
+    Factored_matrix<SparseSolver> factored(solver);
+    const Complex_vector solution = solve_shifted_system(em.mass, em.mass, 0., rhs, Constraints(), factored);
+    for(std::size_t i = 0; i < comp.vertices.size(); ++i) line[comp.vertices[i]] = solution[static_cast<Eigen::Index>(i)];
+  }
+  return line;
 }
 
 // The rescaled angle phi whose layout by tangent_direction() has the direction
@@ -151,4 +179,4 @@ inline std::complex<double> boundary_coefficient(const Indexed_mesh& m, const Ta
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_GUIDANCE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_GUIDANCE_H

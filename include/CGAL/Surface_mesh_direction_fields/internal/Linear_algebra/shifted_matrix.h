@@ -9,11 +9,12 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SHIFTED_MATRIX_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SHIFTED_MATRIX_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SHIFTED_MATRIX_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SHIFTED_MATRIX_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Sparse>
@@ -34,8 +35,8 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-typedef Eigen::SparseMatrix<std::complex<double> > Complex_sparse_matrix;
-
+// Whether A and M are compressed with the same pattern (the assembly makes
+// them so): then A + shift M is one pass over both value arrays.
 inline bool have_same_pattern(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M)
 {
   return A.isCompressed() && M.isCompressed() && A.rows() == M.rows() && A.cols() == M.cols() &&
@@ -97,4 +98,4 @@ inline Complex_sparse_matrix shifted_lower_triangle(const Complex_sparse_matrix&
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SHIFTED_MATRIX_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SHIFTED_MATRIX_H

@@ -9,13 +9,13 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_HERMITIAN_PRODUCTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_HERMITIAN_PRODUCTS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Dense>
@@ -189,4 +189,4 @@ inline void combine_columns(const Eigen::Ref<const Complex_dense_matrix>& V, con
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_HERMITIAN_PRODUCTS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_HERMITIAN_PRODUCTS_H

@@ -9,12 +9,12 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_COMPONENTS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_COMPONENTS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_COMPONENTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_COMPONENTS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 
 #include <cstddef>
 #include <vector>
@@ -96,4 +96,4 @@ inline Components split_into_components(const Indexed_mesh& m)
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_COMPONENTS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_COMPONENTS_H

@@ -9,11 +9,12 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SOLVE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SOLVE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/prefetch.h>
 #include <CGAL/use.h>
@@ -222,24 +223,21 @@ private:
   std::vector<std::int32_t> m_top_position;
 };
 
-namespace supernodal_detail {
-
-typedef std::complex<double> Complex;
-typedef Eigen::Matrix<Complex, Eigen::Dynamic, 1> Vector;
-typedef Eigen::Map<const Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> > Block;
+// A supernode's stored block of the factor, read in place.
+typedef Eigen::Map<const Complex_dense_matrix> Supernode_block;
 
 template <typename Index>
-Block supernode_block(const Supernodal_factor_view<Index>& L, std::size_t s)
+Supernode_block supernode_block(const Supernodal_factor_view<Index>& L, std::size_t s)
 {
   const Eigen::Index rows = static_cast<Eigen::Index>(L.row_start[s + 1] - L.row_start[s]);
   const Eigen::Index columns = static_cast<Eigen::Index>(L.super[s + 1] - L.super[s]);
-  return Block(L.values + L.value_start[s], rows, columns);
+  return Supernode_block(L.values + L.value_start[s], rows, columns);
 }
 
 // The rows below supernode s's diagonal block: y at them, into scratch; and
 // each scratch value, with its row, to subtract(row, value).
 template <typename Index>
-void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Vector& y, Vector& scratch)
+void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Complex_vector& y, Complex_vector& scratch)
 {
   const Index columns = L.super[s + 1] - L.super[s];
   const Index* rows = L.rows + L.row_start[s] + columns;
@@ -248,7 +246,7 @@ void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const V
 }
 
 template <typename Index, typename Subtract>
-void scatter_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Vector& scratch, const Subtract& subtract)
+void scatter_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Complex_vector& scratch, const Subtract& subtract)
 {
   const Index* rows = L.rows + L.row_start[s] + (L.super[s + 1] - L.super[s]);
   for(Eigen::Index i = 0; i < scratch.size(); ++i) subtract(static_cast<std::size_t>(rows[i]), scratch[i]);
@@ -317,10 +315,10 @@ void prefetch_supernode(const Supernodal_factor_view<Index>& L, std::size_t s)
 // contiguously: t holds the supernode's unknowns, then (from zero) minus
 // the products of the rows below. The diagonal of an LL^* factor is real.
 template <typename Index, typename Subtract>
-void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& t,
+void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& t,
                        const Subtract& subtract)
 {
-  const Block block = supernode_block(L, s);
+  const Supernode_block block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), rows = block.rows();
   const Eigen::Index first = static_cast<Eigen::Index>(L.super[s]);
   t.resize(rows);
@@ -343,9 +341,9 @@ void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Ve
 // here); the triangle is solved from the last column up, each column's
 // entries read contiguously.
 template <typename Index>
-void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& scratch)
+void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
 {
-  const Block block = supernode_block(L, s);
+  const Supernode_block block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), below = block.rows() - columns;
   const Eigen::Index first = static_cast<Eigen::Index>(L.super[s]);
   auto ys = y.segment(first, columns);
@@ -367,7 +365,7 @@ void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, V
 // supernode is updated with it, in fixed chunks of rows (forward) or of
 // columns (backward), so the result does not depend on the scheduling.
 constexpr Eigen::Index panel = 64;
-constexpr Eigen::Index chunk_entries = 16384;
+constexpr Eigen::Index supernode_chunk_entries = 16384;
 
 template <typename Body>
 void for_each_chunk_of(Eigen::Index begin, Eigen::Index end, Eigen::Index chunk, const Body& body)
@@ -381,10 +379,10 @@ void for_each_chunk_of(Eigen::Index begin, Eigen::Index end, Eigen::Index chunk,
 }
 
 template <typename Index, typename Subtract>
-void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& scratch,
+void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch,
                                    const Subtract& subtract)
 {
-  const Block block = supernode_block(L, s);
+  const Supernode_block block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), rows = block.rows(), below = rows - columns;
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   scratch.setZero(below);
@@ -394,8 +392,8 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::
     block.block(c0, c0, w, w).template triangularView<Eigen::Lower>().solveInPlace(ys.segment(c0, w));
     const auto solved = ys.segment(c0, w);
     // rows [c0 + w, rows): the rest of the diagonal block, then the rows below
-    for_each_chunk_of(c0 + w, rows, (std::max)(Eigen::Index(64), chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
-      const Vector product = block.block(a, c0, b - a, w) * solved;
+    for_each_chunk_of(c0 + w, rows, (std::max)(Eigen::Index(64), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
+      const Complex_vector product = block.block(a, c0, b - a, w) * solved;
       for(Eigen::Index i = a; i < b; ++i)
       {
         if(i < columns) ys[i] -= product[i - a];
@@ -407,15 +405,15 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::
 }
 
 template <typename Index>
-void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& scratch)
+void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
 {
-  const Block block = supernode_block(L, s);
+  const Supernode_block block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), below = block.rows() - columns;
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   if(below > 0)
   {
     gather_below(L, s, y, scratch);
-    for_each_chunk_of(0, columns, (std::max)(Eigen::Index(1), chunk_entries / below), [&](Eigen::Index a, Eigen::Index b) {
+    for_each_chunk_of(0, columns, (std::max)(Eigen::Index(1), supernode_chunk_entries / below), [&](Eigen::Index a, Eigen::Index b) {
       ys.segment(a, b - a).noalias() -= block.bottomRows(below).middleCols(a, b - a).adjoint() * scratch;
     });
   }
@@ -425,8 +423,8 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std:
   {
     const Eigen::Index c0 = (std::max)(Eigen::Index(0), end - panel), w = end - c0;
     block.block(c0, c0, w, w).template triangularView<Eigen::Lower>().adjoint().solveInPlace(ys.segment(c0, w));
-    const Vector solved = ys.segment(c0, w);
-    for_each_chunk_of(0, c0, (std::max)(Eigen::Index(1), chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
+    const Complex_vector solved = ys.segment(c0, w);
+    for_each_chunk_of(0, c0, (std::max)(Eigen::Index(1), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
       ys.segment(a, b - a).noalias() -= block.block(c0, a, w, b - a).adjoint() * solved;
     });
     end = c0;
@@ -434,26 +432,25 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std:
 }
 
 // Whether a supernode is worth splitting over threads.
-inline bool is_large(Eigen::Index rows, Eigen::Index columns) { return rows * columns >= 4 * chunk_entries; }
+inline bool is_large_supernode(Eigen::Index rows, Eigen::Index columns) { return rows * columns >= 4 * supernode_chunk_entries; }
 
 template <typename Index, typename Subtract>
-void forward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& scratch,
+void forward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch,
                            const Subtract& subtract)
 {
-  const Block block = supernode_block(L, s);
-  if(is_large(block.rows(), block.cols())) forward_supernode_in_parallel(L, s, y, scratch, subtract);
+  const Supernode_block block = supernode_block(L, s);
+  if(is_large_supernode(block.rows(), block.cols())) forward_supernode_in_parallel(L, s, y, scratch, subtract);
   else forward_supernode(L, s, y, scratch, subtract);
 }
 
 template <typename Index>
-void backward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Vector& y, Vector& scratch)
+void backward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
 {
-  const Block block = supernode_block(L, s);
-  if(is_large(block.rows(), block.cols())) backward_supernode_in_parallel(L, s, y, scratch);
+  const Supernode_block block = supernode_block(L, s);
+  if(is_large_supernode(block.rows(), block.cols())) backward_supernode_in_parallel(L, s, y, scratch);
   else backward_supernode(L, s, y, scratch);
 }
 
-} // namespace supernodal_detail
 
 // x = A^{-1} b for P A P^T = L L^*.
 template <typename Index>
@@ -461,22 +458,21 @@ Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>
 supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_plan& plan,
                  const Eigen::Ref<const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1> >& b)
 {
-  using namespace supernodal_detail;
   const Eigen::Index n = static_cast<Eigen::Index>(L.n);
   auto permuted = [&L](std::size_t i) {
     return static_cast<Eigen::Index>(L.permutation ? static_cast<std::size_t>(L.permutation[i]) : i);
   };
-  Vector y(n);
+  Complex_vector y(n);
   parallel_for_each_index(L.n, [&](std::size_t i) { y[static_cast<Eigen::Index>(i)] = b[permuted(i)]; });
 
   // forward: the tasks, each with its buffer of updates of the top
   const std::vector<Supernodal_solve_plan::Task>& tasks = plan.tasks();
   const std::vector<std::size_t>& top_columns = plan.top_columns();
-  std::vector<Vector> buffers(tasks.size());
+  std::vector<Complex_vector> buffers(tasks.size());
   parallel_for_each_task(tasks.size(), [&](std::size_t t) {
-    Vector& buffer = buffers[t];
+    Complex_vector& buffer = buffers[t];
     buffer.setZero(static_cast<Eigen::Index>(top_columns.size()));
-    Vector scratch;
+    Complex_vector scratch;
     const std::size_t first_column = static_cast<std::size_t>(L.super[tasks[t].first]);
     const std::size_t end_column = static_cast<std::size_t>(L.super[tasks[t].last + 1]);
     for(std::size_t s = tasks[t].first; s <= tasks[t].last; ++s)
@@ -487,19 +483,19 @@ supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_
           buffer[plan.top_position(row)] += value;  // an ancestor: in the top
       });
   });
-  for(const Vector& buffer : buffers)  // in task order: deterministic
+  for(const Complex_vector& buffer : buffers)  // in task order: deterministic
     for(std::size_t p = 0; p < top_columns.size(); ++p)
       y[static_cast<Eigen::Index>(top_columns[p])] -= buffer[static_cast<Eigen::Index>(p)];
   buffers.clear();
   {
-    Vector scratch;
+    Complex_vector scratch;
     for(std::size_t s : plan.top())
       forward_top_supernode(L, s, y, scratch, [&](std::size_t row, const Complex& value) { y[static_cast<Eigen::Index>(row)] -= value; });
     // backward: the top, then the tasks
     for(auto s = plan.top().rbegin(); s != plan.top().rend(); ++s) backward_top_supernode(L, *s, y, scratch);
   }
   parallel_for_each_task(tasks.size(), [&](std::size_t t) {
-    Vector scratch;
+    Complex_vector scratch;
     for(std::size_t s = tasks[t].last + 1; s-- > tasks[t].first;)
     {
       if(s > tasks[t].first) prefetch_supernode(L, s - 1);
@@ -507,7 +503,7 @@ supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_
     }
   });
 
-  Vector x(n);
+  Complex_vector x(n);
   parallel_for_each_index(L.n, [&](std::size_t i) { x[permuted(i)] = y[static_cast<Eigen::Index>(i)]; });
   return x;
 }
@@ -516,4 +512,4 @@ supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SOLVE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H

@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_INDEXED_MESH_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_INDEXED_MESH_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -87,6 +87,18 @@ struct Indexed_mesh
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_faces() const { return faces.size(); }
   std::size_t fan_size(std::size_t v) const { return fan_offsets[v + 1] - fan_offsets[v]; }
+  // the corners of v's fan, counter-clockwise, for a range-for over std::size_t
+  struct Corner_range
+  {
+    const Compact_index *first, *last;
+    const Compact_index* begin() const { return first; }
+    const Compact_index* end() const { return last; }
+  };
+  Corner_range fan(std::size_t v) const
+  {
+    return {fan_corners.data() + static_cast<std::size_t>(fan_offsets[v]),
+            fan_corners.data() + static_cast<std::size_t>(fan_offsets[v + 1])};
+  }
 
   static std::size_t face_of_corner(std::size_t corner) { return corner / 3; }
   static std::size_t next_corner(std::size_t corner) { return 3 * (corner / 3) + (corner + 1) % 3; }
@@ -116,26 +128,13 @@ void parallel_for_each_face(const Indexed_mesh& m, const FaceBody& body)
   });
 }
 
-// Builds the flat representation. `point_of(v)` returns the coordinates of a
-// vertex as std::array<double,3>. Throws Invalid_input_error on an empty mesh,
-// a non-triangle face, a non-finite coordinate or a non-manifold vertex.
-template <typename TriangleMesh, typename PointOf, typename VertexIndexMap, typename FaceIndexMap>
-Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
-                               VertexIndexMap vim, FaceIndexMap fim)
+// The steps of make_indexed_mesh(), each a pass over the mesh.
+
+// The coordinates of every vertex, by index; throws on a non-finite one.
+template <typename TriangleMesh, typename PointOf, typename VertexIndexMap>
+void copy_points(const TriangleMesh& tm, const PointOf& point_of, VertexIndexMap vim, Indexed_mesh& m)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-
-  Indexed_mesh m;
-  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
-  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
-  if(nv == 0 || nf == 0)
-    throw Invalid_input_error("empty mesh: the mesh has no " + std::string(nv == 0 ? "vertex" : "face"));
-  if(nv > Compact_index::largest || nf > Compact_index::largest / 3)
-    throw Invalid_input_error("the mesh is too large: at most " + std::to_string(Compact_index::largest / 3) +
-                              " faces and " + std::to_string(Compact_index::largest) + " vertices");
-
-  m.points.resize(nv);
+  m.points.resize(static_cast<std::size_t>(num_vertices(tm)));
   for(auto v : vertices(tm))
   {
     const std::size_t i = static_cast<std::size_t>(get(vim, v));
@@ -144,14 +143,21 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
       if(!std::isfinite(x))
         throw Invalid_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
+}
 
+// The vertices of every face in the order of its halfedge cycle; throws on a
+// face that is not a triangle. Returns the number of faces of each vertex.
+template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
+std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Indexed_mesh& m)
+{
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
   m.faces.resize(nf);
   m.twin_corner.assign(3 * nf, no_index);
-  std::vector<std::size_t> incident_faces(nv, 0);
+  std::vector<std::size_t> incident_faces(m.points.size(), 0);
   for(auto f : faces(tm))
   {
     const std::size_t fi = static_cast<std::size_t>(get(fim, f));
-    halfedge_descriptor h = halfedge(f, tm);
+    auto h = halfedge(f, tm);
     if(next(next(next(h, tm), tm), tm) != h)
       throw Invalid_input_error("face " + std::to_string(fi) + " is not a triangle");
     for(int c = 0; c < 3; ++c, h = next(h, tm))
@@ -160,20 +166,93 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
       ++incident_faces[m.faces[fi][c]];
     }
   }
+  return incident_faces;
+}
 
-  // Position of halfedge h (a halfedge of face f) in f's cycle.
-  auto corner_of = [&](halfedge_descriptor h) {
-    const auto f = face(h, tm);
-    halfedge_descriptor g = halfedge(f, tm);
+// The corners of one vertex, counter-clockwise, found by walking its
+// halfedges; for an open fan the walk starts on the border (see the
+// conventions above).
+template <typename TriangleMesh, typename FaceIndexMap>
+class Fan_walker
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  const TriangleMesh& m_tm;
+  FaceIndexMap m_fim;
+  std::vector<std::size_t> m_clockwise;  // the corners of an open fan before the start, clockwise
+
+public:
+  Fan_walker(const TriangleMesh& tm, FaceIndexMap fim) : m_tm(tm), m_fim(fim) {}
+
+  // The corner 3 f + c of halfedge h, c its position in its face's cycle.
+  std::size_t corner_of(halfedge_descriptor h) const
+  {
+    const auto f = face(h, m_tm);
+    halfedge_descriptor g = halfedge(f, m_tm);
     int c = 0;
-    while(g != h) { g = next(g, tm); ++c; }
-    return 3 * static_cast<std::size_t>(get(fim, f)) + static_cast<std::size_t>(c);
-  };
+    while(g != h) { g = next(g, m_tm); ++c; }
+    return 3 * static_cast<std::size_t>(get(m_fim, f)) + static_cast<std::size_t>(c);
+  }
 
-  // Each vertex's fan takes as many corners as the vertex has incident
-  // faces (more or fewer means a non-manifold vertex): the offsets are known
-  // before the walks, so the fans are walked in parallel, each vertex writing
-  // only its own range of fan_corners and the twins of its own corners.
+  // The fan of the vertex whose halfedge is hv (at most `bound` corners are
+  // visited, a guard on broken meshes); returns whether it is open.
+  bool walk(halfedge_descriptor hv, std::size_t bound, std::vector<std::size_t>& fan)
+  {
+    // Walk counter-clockwise through the corners of v from one outgoing
+    // halfedge (the next outgoing halfedge is opposite(prev(h))). Reaching a
+    // border halfedge means the fan is open: its beginning is then found by
+    // walking clockwise from the start (next(opposite(h))), so every halfedge
+    // of the fan is visited once.
+    const halfedge_descriptor start = opposite(hv, m_tm);
+    halfedge_descriptor h = start;
+    bool open = false;
+    fan.clear();
+    do
+    {
+      if(is_border(h, m_tm)) { open = true; break; }
+      fan.push_back(corner_of(h));
+      h = opposite(prev(h, m_tm), m_tm);
+    }
+    while(h != start && fan.size() <= bound);
+    if(!open) return false;
+    m_clockwise.clear();
+    for(halfedge_descriptor g = start; !is_border(opposite(g, m_tm), m_tm) && m_clockwise.size() <= bound;)
+    {
+      g = next(opposite(g, m_tm), m_tm);
+      if(g == start) break;
+      m_clockwise.push_back(corner_of(g));
+    }
+    fan.insert(fan.begin(), m_clockwise.rbegin(), m_clockwise.rend());
+    return true;
+  }
+};
+
+// Twins from a fan: corner k at v has third vertex b, and the next corner k2
+// counter-clockwise has first side v -> b, the reverse of the first side
+// b -> v of previous_corner(k). Each vertex writes the twins of its own
+// corners k2 (the other direction is written by b); the first corner of an
+// open fan has a border side and no twin.
+inline void set_twins_of_fan(const std::vector<std::size_t>& fan, bool open, Indexed_mesh& m)
+{
+  const std::size_t count = fan.size();
+  for(std::size_t a = 0; a < count; ++a)
+  {
+    if(open && a + 1 == count) break;  // no corner after the last one of an open fan
+    m.twin_corner[fan[(a + 1) % count]] = Indexed_mesh::previous_corner(fan[a]);
+  }
+}
+
+// The fans, border flags and twins of all vertices. Each vertex's fan takes
+// as many corners as the vertex has incident faces (more or fewer means a
+// non-manifold vertex): the offsets are known before the walks, so the fans
+// are walked in parallel, each vertex writing only its own range of
+// fan_corners and the twins of its own corners. Throws on a non-manifold vertex.
+template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
+void build_fans(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim,
+                const std::vector<std::size_t>& incident_faces, Indexed_mesh& m)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  const std::size_t nv = m.points.size();
   m.fan_offsets.assign(nv + 1, 0);
   for(std::size_t i = 0; i < nv; ++i) m.fan_offsets[i + 1] = m.fan_offsets[i] + incident_faces[i];
   m.fan_corners.assign(m.fan_offsets[nv], no_index);
@@ -185,73 +264,48 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
 
   std::vector<unsigned char> non_manifold(nv, 0);
   parallel_for_each_range(nv, [&](std::size_t begin, std::size_t end) {
-    std::vector<std::size_t> fan, clockwise;  // the corners of an open fan before the start, clockwise
+    Fan_walker<TriangleMesh, FaceIndexMap> walker(tm, fim);
+    std::vector<std::size_t> fan;
     for(std::size_t i = begin; i < end; ++i)
     {
       if(incident_faces[i] == 0)
         continue;  // isolated vertex: empty fan
-      const halfedge_descriptor hv = halfedge(vertex_of_index[i], tm);
-      if(hv == GT::null_halfedge())
-      {
-        non_manifold[i] = 1;
-        continue;
-      }
-
-      // Walk counter-clockwise through the corners of v from one outgoing
-      // halfedge (the next outgoing halfedge is opposite(prev(h))). Reaching a
-      // border halfedge means the fan is open: its beginning is then found by
-      // walking clockwise from the start (next(opposite(h))), so every halfedge
-      // of the fan is visited once.
-      const halfedge_descriptor start = opposite(hv, tm);
-      const std::size_t bound = incident_faces[i] + 1;  // guards the walks on broken meshes
-      halfedge_descriptor h = start;
-      bool open = false;
-      fan.clear();
-      do
-      {
-        if(is_border(h, tm)) { open = true; break; }
-        fan.push_back(corner_of(h));
-        h = opposite(prev(h, tm), tm);
-      }
-      while(h != start && fan.size() <= bound);
-      if(open)
-      {
-        m.is_border_vertex[i] = 1;
-        clockwise.clear();
-        for(halfedge_descriptor g = start; !is_border(opposite(g, tm), tm) && clockwise.size() <= bound;)
-        {
-          g = next(opposite(g, tm), tm);
-          if(g == start) break;
-          clockwise.push_back(corner_of(g));
-        }
-        fan.insert(fan.begin(), clockwise.rbegin(), clockwise.rend());
-      }
-      if(fan.size() != incident_faces[i])
+      const auto hv = halfedge(vertex_of_index[i], tm);
+      const bool open = hv != GT::null_halfedge() && walker.walk(hv, incident_faces[i] + 1, fan);
+      if(hv == GT::null_halfedge() || fan.size() != incident_faces[i])
       {
         non_manifold[i] = 1;  // its incident faces do not form a single fan
         continue;
       }
+      m.is_border_vertex[i] = open;
       std::copy(fan.begin(), fan.end(), m.fan_corners.begin() + static_cast<std::ptrdiff_t>(m.fan_offsets[i]));
-
-      // Twins from the fan: corner k at v has third vertex b, and the next
-      // corner k2 counter-clockwise has first side v -> b, the reverse of the
-      // first side b -> v of previous_corner(k). Each vertex writes the twins
-      // of its own corners k2 (the other direction is written by b); the
-      // first corner of an open fan has a border side and no twin.
-      const std::size_t count = fan.size();
-      for(std::size_t a = 0; a < count; ++a)
-      {
-        if(open && a + 1 == count) break;  // no corner after the last one of an open fan
-        const std::size_t k = fan[a], k2 = fan[(a + 1) % count];
-        m.twin_corner[k2] = Indexed_mesh::previous_corner(k);
-      }
+      set_twins_of_fan(fan, open, m);
     }
   });
   const auto bad = std::find(non_manifold.begin(), non_manifold.end(), 1);
   if(bad != non_manifold.end())
     throw Invalid_input_error("vertex " + std::to_string(bad - non_manifold.begin()) +
                               " is non-manifold (its incident faces do not form a single fan)");
+}
 
+// Builds the flat representation. `point_of(v)` returns the coordinates of a
+// vertex as std::array<double,3>. Throws Invalid_input_error on an empty mesh,
+// a non-triangle face, a non-finite coordinate or a non-manifold vertex.
+template <typename TriangleMesh, typename PointOf, typename VertexIndexMap, typename FaceIndexMap>
+Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
+                               VertexIndexMap vim, FaceIndexMap fim)
+{
+  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  if(nv == 0 || nf == 0)
+    throw Invalid_input_error("empty mesh: the mesh has no " + std::string(nv == 0 ? "vertex" : "face"));
+  if(nv > Compact_index::largest || nf > Compact_index::largest / 3)
+    throw Invalid_input_error("the mesh is too large: at most " + std::to_string(Compact_index::largest / 3) +
+                              " faces and " + std::to_string(Compact_index::largest) + " vertices");
+  Indexed_mesh m;
+  copy_points(tm, point_of, vim, m);
+  const std::vector<std::size_t> incident_faces = copy_triangles(tm, vim, fim, m);
+  build_fans(tm, vim, fim, incident_faces, m);
   return m;
 }
 
@@ -259,4 +313,4 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INDEXED_MESH_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_INDEXED_MESH_H

@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FIELD_INPUTS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FIELD_INPUTS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -18,12 +18,9 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/aligned_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/guidance.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
 #include <CGAL/number_utils.h>
 
@@ -98,27 +95,15 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
   {
     if(degree % 2 != 0)
       throw Invalid_input_error("curvature alignment needs an even degree n (got " + std::to_string(degree) + ")");
-    // The Hopf differential is a line field (n = 2): its coefficients solve
-    // M_2 q = q~ with the mass matrix of the degree-2 connection.
-    const std::vector<Complex> pairing = hopf_differential_pairing(mesh, ts);
-    const Connection line_connection = compute_connection(mesh, ts, 2);
+    const std::vector<Complex> line = curvature_line_field(mesh, ts, components, solver);
     q.assign(mesh.number_of_vertices(), Complex(0., 0.));
-    const std::vector<Energy_and_mass> line_matrices = assemble_energy_and_mass(mesh, ts, line_connection, components, 0.);
-    for(std::size_t c = 0; c < components.list.size(); ++c)
-    {
-      const Component& comp = components.list[c];
-      const Energy_and_mass& em = line_matrices[c];
-      Complex_vector rhs(static_cast<Eigen::Index>(comp.vertices.size()));
-      for(std::size_t i = 0; i < comp.vertices.size(); ++i) rhs[static_cast<Eigen::Index>(i)] = pairing[comp.vertices[i]];
-      Factored_matrix<SparseSolver> factored(solver);
-      const Complex_vector line = solve_aligned_system(em.mass, em.mass, 0., rhs, Constraints(), factored);
-      for(std::size_t i = 0; i < comp.vertices.size(); ++i)
+    for(const Component& comp : components.list)
+      for(std::size_t v : comp.vertices)
       {
-        Complex w = line[static_cast<Eigen::Index>(i)];
-        if(curvature == Principal_curvature_alignment::MINIMUM) w = -w;  // the orthogonal line field
-        q[comp.vertices[i]] = std::pow(w, degree / 2);
+        // the minimum-curvature lines are orthogonal to the maximum ones: -w
+        const Complex w = curvature == Principal_curvature_alignment::MINIMUM ? -line[v] : line[v];
+        q[v] = std::pow(w, degree / 2);
       }
-    }
   }
   if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value)
   {
@@ -133,6 +118,36 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
     }
   }
   return q;
+}
+
+// How strongly the field follows its guidance: lambda_t, or the alignment
+// weight t from which lambda_t is found (user manual, "Aligned Fields").
+struct Alignment_request
+{
+  bool lambda_given = false, weight_given = false;
+  double lambda = 0., weight = 0.5;
+};
+
+template <typename NamedParameters>
+Alignment_request alignment_request(const NamedParameters& np, bool has_guidance)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  Alignment_request r;
+  r.lambda_given = !is_default_parameter<NamedParameters, internal_np::alignment_lambda_t>::value;
+  r.weight_given = !is_default_parameter<NamedParameters, internal_np::alignment_weight_t>::value;
+  r.lambda = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
+  r.weight = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
+  if(r.lambda_given && r.weight_given)
+    throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
+  if(r.lambda_given && !std::isfinite(r.lambda))
+    throw Invalid_input_error("alignment_lambda must be a finite number");
+  if(r.weight_given && !(r.weight > 0. && r.weight < 1.))
+    throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + std::to_string(r.weight) + ")");
+  if(r.weight_given && !has_guidance)
+    throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+  return r;
 }
 
 struct Vertex_constraints
@@ -194,4 +209,4 @@ Vertex_constraints vertex_constraints(const Indexed_mesh& mesh, const Tangent_sp
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FIELD_INPUTS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H

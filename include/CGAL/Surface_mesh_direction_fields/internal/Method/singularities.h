@@ -9,14 +9,15 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SINGULARITIES_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SINGULARITIES_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <cmath>
@@ -69,4 +70,4 @@ inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& co
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SINGULARITIES_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SINGULARITIES_H

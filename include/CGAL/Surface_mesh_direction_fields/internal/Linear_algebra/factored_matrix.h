@@ -9,13 +9,14 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FACTORED_MATRIX_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FACTORED_MATRIX_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_FACTORED_MATRIX_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_FACTORED_MATRIX_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/shifted_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/use.h>
@@ -25,7 +26,7 @@
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
-#include <CGAL/Surface_mesh_direction_fields/internal/supernodal_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #endif
 
 #include <complex>
@@ -52,9 +53,6 @@
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
-
-typedef Eigen::SparseMatrix<std::complex<double> > Complex_sparse_matrix;
-typedef Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic> Complex_dense_matrix;
 
 template <typename SparseSolver, typename Enable = void>
 class Factored_matrix
@@ -443,4 +441,4 @@ public:
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_FACTORED_MATRIX_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_FACTORED_MATRIX_H

@@ -9,14 +9,14 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_LINEAR_SOLVES_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_LINEAR_SOLVES_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/inverse_iteration.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 
 #include <Eigen/Sparse>
 
@@ -52,7 +52,7 @@ struct Constraints
 // `same_pattern`: the system has the sparsity pattern of the previous call
 // with the same `factored` (e.g. another lambda), so the symbolic analysis is reused.
 template <typename SparseSolver>
-Complex_vector solve_aligned_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
+Complex_vector solve_shifted_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
                                     const Complex_vector& Mq, const Constraints& constraints,
                                     Factored_matrix<SparseSolver>& factored, bool same_pattern = false)
 {
@@ -116,7 +116,7 @@ double find_lambda_for_weight(const Complex_sparse_matrix& A, const Complex_spar
                               Factored_matrix<SparseSolver>& factored, Complex_vector& u, std::size_t& evaluations)
 {
   auto weight_at = [&](double x, Complex_vector& sol) {
-    sol = solve_aligned_system(A, M, lambda_1 - std::exp(x), Mq, constraints, factored, evaluations > 0);
+    sol = solve_shifted_system(A, M, lambda_1 - std::exp(x), Mq, constraints, factored, evaluations > 0);
     ++evaluations;
     return alignment_weight_of(M, sol) - target;
   };
@@ -160,4 +160,4 @@ double find_lambda_for_weight(const Complex_sparse_matrix& A, const Complex_spar
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ALIGNED_SOLVE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_LINEAR_SOLVES_H

@@ -9,16 +9,16 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INVERSE_ITERATION_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INVERSE_ITERATION_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_EIGEN_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_EIGEN_SOLVE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/eigenvalue_estimate.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/factored_matrix.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/coarse_hierarchy.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
@@ -102,7 +102,7 @@ struct Eigen_solve_result
 {
   Complex_vector vector;  // M-normalized: u^* M u = 1
   double eigenvalue = 0.;
-  double residual = 0.;   // ||A u - lambda M u|| / (sigma ||M u||), sigma = trace(A)/trace(M)
+  double residual = 0.;   // ||A u - lambda M u|| / (s_A ||M u||), s_A = trace(A) / trace(M) (eigenvalue_scale())
   std::size_t iterations = 0;
   bool converged = false;
   double factorization_ms = 0., solve_ms = 0.;
@@ -129,11 +129,6 @@ inline Complex_vector random_start_vector(Eigen::Index n, unsigned int seed)
     x[i] = Complex(re, uniform());
   }
   return x;
-}
-
-inline double m_norm(const Complex_sparse_matrix& M, const Complex_vector& x)
-{
-  return std::sqrt((std::max)(0., x.dot(M * x).real()));  // dot conjugates its left argument
 }
 
 // Makes the columns of W orthonormal for the diagonal inner product
@@ -253,55 +248,104 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
   return estimate;
 }
 
-// The smallest eigenpair of the pencil (A, M).
-//
-// Inverse iteration, X <- (A - sigma M)^{-1} M X, on one factorization of
-// A - sigma M (sigma from the coarse estimate, or -epsilon), applied to a block of `block_size` vectors (1 by default:
-// on the shared meshes a block of b vectors saves fewer solves than the b
-// times more work of a block solve), accelerated by Rayleigh-Ritz: the
-// iterates are kept as a basis V (orthonormal for the lumped mass diag(M),
-// which needs no sparse product and keeps V^* M V well conditioned) and the
-// best vector of span(V) is the smallest eigenpair of the small pencil
-// (V^* A V, V^* M V). Each step applies the solve to the current best Ritz
-// vectors, so the basis holds the iterates of a Krylov-like sequence; on
-// symmetric shapes, whose lowest eigenvalues cluster (a round sphere, a
-// torus of revolution), this converges where plain inverse iteration would
-// need thousands of steps. When V is full it is restarted with its
-// `restart_size` best Ritz vectors (the next ones matter where eigenvalues
-// cluster) and the previous best Ritz vectors, whose span holds the step
-// direction (as in LOBPCG). Only V is stored (not A V, M V), so the memory is
-// about `basis_size` + 2 `restart_size` vectors. (Keeping A V and M V instead
-// saves the sparse products of the Ritz vector but costs more passes over
-// memory: it was not faster at 400,000 faces.) The iteration stops when the relative residual of the
-// best Ritz pair reaches the tolerance; `iterations` counts the solves
-// (of a block each).
-template <typename SparseSolver>
-Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                      Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options)
+// The pencil (A, M) with what the iteration derives from it once.
+struct Hermitian_pencil
 {
-  typedef std::chrono::steady_clock Clock;
-  const Eigen::Index n = A.rows();
-  Eigen_solve_result result;
-  const Eigen::VectorXd lumped_mass = M.diagonal().real();
-  const double sigma = A.diagonal().real().sum() / lumped_mass.sum();
-  const bool same_pattern = have_same_pattern(A, M);
+  Hermitian_pencil(const Complex_sparse_matrix& A_, const Complex_sparse_matrix& M_)
+    : A(A_), M(M_), lumped_mass(M_.diagonal().real()),
+      // trace(A) / trace(M) (as eigenvalue_scale(), with the lumped mass at hand)
+      scale(A_.diagonal().real().sum() / lumped_mass.sum()), same_pattern(have_same_pattern(A_, M_))
+  {}
+  const Complex_sparse_matrix& A;
+  const Complex_sparse_matrix& M;
+  const Eigen::VectorXd lumped_mass;  // diag(M)
+  const double scale;
+  const bool same_pattern;  // A and M share one compressed pattern
+};
 
-  const auto t_start = Clock::now();
-  Coarse_estimate estimate;
-  if(n >= options.coarse_threshold)
-    estimate = coarse_estimate<SparseSolver>(A, M, same_pattern, options);
-  result.eigenvalue_bound = estimate.bound;
-  result.coarse_iterations = estimate.iterations;
+// The basis V of the Rayleigh-Ritz space, orthonormal for the lumped mass
+// diag(M), with the small projected pencil H = V^* A V, G = V^* M V. Its
+// memory is allocated once (`capacity` columns, huge pages) and written
+// column by column.
+class Ritz_basis
+{
+  const Hermitian_pencil& m_pencil;
+  Complex_dense_matrix m_V;
+  Eigen::Index m_size = 0;
+  Complex_dense_matrix m_H, m_G;  // V^* A V and V^* M V
+  Complex_dense_matrix m_AQ, m_MQ;
 
-  // Factor A - shift_fraction R M if it is positive definite (R >= lambda_1,
-  // so it is unless R overestimates lambda_1 by 1 / shift_fraction or more),
-  // else A + epsilon M; not worth trying where lambda_1 is about 0.
-  const auto t0 = Clock::now();
-  result.shift = options.relative_shift * sigma;
-  bool factored_shifted = false;
-  if(Factored_matrix<SparseSolver>::detects_indefinite && options.shift_fraction * estimate.bound > result.shift)
+public:
+  Ritz_basis(const Hermitian_pencil& pencil, Eigen::Index capacity) : m_pencil(pencil), m_V(pencil.A.rows(), capacity)
   {
-    const double trial = -options.shift_fraction * estimate.bound;
+    advise_huge_pages(m_V.data(), static_cast<std::size_t>(m_V.size()) * sizeof(Complex));
+  }
+
+  Eigen::Index size() const { return m_size; }
+  auto vectors() const { return m_V.leftCols(m_size); }
+  const Complex_dense_matrix& projected_A() const { return m_H; }
+  const Complex_dense_matrix& projected_M() const { return m_G; }
+
+  void clear()
+  {
+    m_size = 0;
+    m_H.resize(0, 0);
+    m_G.resize(0, 0);
+  }
+
+  // Adds the part of the columns of W outside the span, orthonormalized, and
+  // extends H and G; returns the number of columns added.
+  Eigen::Index add(const Complex_dense_matrix& W)
+  {
+    const Eigen::Index n = m_pencil.A.rows(), k = m_size;
+    const Complex_dense_matrix Q = d_orthonormalize(m_pencil.lumped_mass, m_V.leftCols(k), W);
+    const Eigen::Index q = Q.cols();
+    if(q == 0) return q;
+    hermitian_multiply_pair(m_pencil.A, m_pencil.M, m_pencil.same_pattern, Q, m_AQ, m_MQ);
+    // copied in parallel: most of this copy's time is the first write to the
+    // basis's fresh pages
+    parallel_for_each_chunk(static_cast<std::size_t>(n), [&](std::size_t begin, std::size_t end) {
+      const auto first = static_cast<Eigen::Index>(begin), rows = static_cast<Eigen::Index>(end - begin);
+      m_V.block(first, k, rows, q) = Q.middleRows(first, rows);
+    });
+    Complex_dense_matrix VAQ, VMQ;  // [V Q]^* A Q and [V Q]^* M Q, in one pass over the basis
+    adjoint_products(m_V.leftCols(k + q), m_AQ, m_MQ, VAQ, VMQ);
+    m_H.conservativeResize(k + q, k + q);
+    m_G.conservativeResize(k + q, k + q);
+    m_H.topRightCorner(k, q) = VAQ.topRows(k);
+    m_G.topRightCorner(k, q) = VMQ.topRows(k);
+    m_H.bottomLeftCorner(q, k) = m_H.topRightCorner(k, q).adjoint();
+    m_G.bottomLeftCorner(q, k) = m_G.topRightCorner(k, q).adjoint();
+    m_H.bottomRightCorner(q, q) = 0.5 * (VAQ.bottomRows(q) + VAQ.bottomRows(q).adjoint());
+    m_G.bottomRightCorner(q, q) = 0.5 * (VMQ.bottomRows(q) + VMQ.bottomRows(q).adjoint());
+    m_size = k + q;
+    return q;
+  }
+};
+
+// `cols` deterministic random vectors, seeds seed, seed + 1, ...
+inline Complex_dense_matrix random_block(Eigen::Index n, Eigen::Index cols, unsigned int seed)
+{
+  Complex_dense_matrix X(n, cols);
+  for(Eigen::Index j = 0; j < cols; ++j) X.col(j) = random_start_vector(n, seed + static_cast<unsigned int>(j));
+  return X;
+}
+
+// Factors A + shift M with the shift as close below lambda_1 as the coarse
+// bound allows: shift = -shift_fraction R if that matrix is positive definite
+// (R >= lambda_1, so it is unless R overestimates lambda_1 by 1 /
+// shift_fraction or more), else shift = +epsilon (A + epsilon M). Not worth
+// trying where lambda_1 is about 0. Records the shift in `result`.
+template <typename SparseSolver>
+void factor_below_smallest_eigenvalue(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                      double eigenvalue_scale, double bound, const Eigen_solve_options& options,
+                                      Factored_matrix<SparseSolver>& factored, Eigen_solve_result& result)
+{
+  result.shift = options.relative_shift * eigenvalue_scale;
+  bool factored_shifted = false;
+  if(Factored_matrix<SparseSolver>::detects_indefinite && options.shift_fraction * bound > result.shift)
+  {
+    const double trial = -options.shift_fraction * bound;
     factored_shifted = factored.factor_shifted_if_positive_definite(A, M, trial, options.same_pattern);
     if(factored_shifted)
       result.shift = trial;
@@ -310,98 +354,66 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   }
   if(!factored_shifted)
     factored.factor_shifted(A, M, result.shift, options.same_pattern);
-  const auto t1 = Clock::now();
+}
 
-  const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
+// The iteration of smallest_eigenpair() on its factorization, from `start`:
+// see there. Returns the best Ritz vector u and M u.
+template <typename SparseSolver>
+void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_matrix<SparseSolver>& factored,
+                                const Eigen_solve_options& options, const Complex_dense_matrix& start,
+                                Eigen_solve_result& result, Complex_vector& u, Complex_vector& Mu)
+{
+  const Complex_sparse_matrix& A = pencil.A;
+  const Complex_sparse_matrix& M = pencil.M;
+  const Eigen::Index n = A.rows();
+  const Eigen::Index block = start.cols();
   const Eigen::Index basis_size =
     (std::max)((std::max)(Eigen::Index(3), options.restart_size + 2) * block, (std::min)(options.basis_size, n));
-
-  // basis: the first `k` columns of V (allocated once)
-  Complex_dense_matrix V(n, basis_size + 2 * block);  // not initialized: written column by column
-  advise_huge_pages(V.data(), static_cast<std::size_t>(V.size()) * sizeof(Complex));
-  Eigen::Index k = 0;
-  Complex_dense_matrix H(0, 0), G(0, 0);  // V^* A V and V^* M V
-  Complex_dense_matrix AQ, MQ;
-  auto add_to_basis = [&](const Complex_dense_matrix& W) {
-    const Complex_dense_matrix Q = d_orthonormalize(lumped_mass, V.leftCols(k), W);
-    const Eigen::Index q = Q.cols();
-    if(q == 0) return q;
-    hermitian_multiply_pair(A, M, same_pattern, Q, AQ, MQ);
-    // copied in parallel: most of this copy's time is the first write to the
-    // basis's fresh pages (4-8 ms per column at 400,000 faces)
-    parallel_for_each_chunk(static_cast<std::size_t>(n), [&](std::size_t begin, std::size_t end) {
-      const auto first = static_cast<Eigen::Index>(begin), rows = static_cast<Eigen::Index>(end - begin);
-      V.block(first, k, rows, q) = Q.middleRows(first, rows);
-    });
-    Complex_dense_matrix VAQ, VMQ;  // [V Q]^* A Q and [V Q]^* M Q, in one pass over the basis
-    adjoint_products(V.leftCols(k + q), AQ, MQ, VAQ, VMQ);
-    H.conservativeResize(k + q, k + q);
-    G.conservativeResize(k + q, k + q);
-    H.topRightCorner(k, q) = VAQ.topRows(k);
-    G.topRightCorner(k, q) = VMQ.topRows(k);
-    H.bottomLeftCorner(q, k) = H.topRightCorner(k, q).adjoint();
-    G.bottomLeftCorner(q, k) = G.topRightCorner(k, q).adjoint();
-    H.bottomRightCorner(q, q) = 0.5 * (VAQ.bottomRows(q) + VAQ.bottomRows(q).adjoint());
-    G.bottomRightCorner(q, q) = 0.5 * (VMQ.bottomRows(q) + VMQ.bottomRows(q).adjoint());
-    k += q;
-    return q;
-  };
-  auto random_block = [&](Eigen::Index cols, unsigned int seed) {
-    Complex_dense_matrix X(n, cols);
-    for(Eigen::Index j = 0; j < cols; ++j) X.col(j) = random_start_vector(n, seed + static_cast<unsigned int>(j));
-    return X;
-  };
-
-  unsigned int next_seed = options.random_seed;
-  {
-    Complex_dense_matrix start = random_block(block, next_seed);
-    if(estimate.vector.size() == n) start.col(0) = estimate.vector;
-    add_to_basis(start);
-  }
-  next_seed += static_cast<unsigned int>(block);
-  Complex_dense_matrix next = V.leftCols(k);  // the block the next solve is applied to
-  Complex_dense_matrix previous(n, 0);        // the best Ritz vectors of the previous step
-  Complex_dense_matrix kept(n, 0);            // the best Ritz vectors a restart keeps
+  Ritz_basis basis(pencil, basis_size + 2 * block);
+  basis.add(start);
+  unsigned int next_seed = options.random_seed + static_cast<unsigned int>(block);
+  Complex_dense_matrix next = basis.vectors();  // the block the next solve is applied to
+  Complex_dense_matrix previous(n, 0);          // the best Ritz vectors of the previous step
+  Complex_dense_matrix kept(n, 0);              // the best Ritz vectors a restart keeps
   Complex_dense_matrix MX = hermitian_multiply(M, next), AU;
-  Complex_vector u = next.col(0);
+  u = next.col(0);
   while(result.iterations < options.max_iterations)
   {
     const Complex_dense_matrix W = factored.solve(MX);
     ++result.iterations;
-    if(k + W.cols() > basis_size)
+    if(basis.size() + W.cols() > basis_size)
     {
       // Restart with the best Ritz vectors and the previous best ones.
-      k = 0;
-      H.resize(0, 0);
-      G.resize(0, 0);
-      add_to_basis(kept);
-      add_to_basis(previous);
+      basis.clear();
+      basis.add(kept);
+      basis.add(previous);
     }
-    if(add_to_basis(W) == 0)
+    if(basis.add(W) == 0)
     {
       // An invariant subspace: enrich with fresh random directions.
-      if(k >= n || add_to_basis(random_block(block, next_seed)) == 0)
+      if(basis.size() >= n || basis.add(random_block(n, block, next_seed)) == 0)
         break;
       next_seed += static_cast<unsigned int>(block);
     }
 
     // Rayleigh-Ritz: the best vectors of span(V), M-orthonormal.
-    Eigen::GeneralizedSelfAdjointEigenSolver<Complex_dense_matrix> ritz(H, G);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Complex_dense_matrix> ritz(basis.projected_A(), basis.projected_M());
     if(ritz.info() != Eigen::Success)
       break;  // V^* M V not positive definite: cannot happen for a positive definite M
+    const Eigen::Index k = basis.size();
     const Eigen::Index best = (std::min)(block, k);
     previous.swap(next);
     const Eigen::Index keep = (std::min)(k, (std::max)(best, options.restart_size));
     if(k + block > basis_size)  // the next step restarts: keep the best Ritz vectors
     {
-      combine_columns(V.leftCols(k), ritz.eigenvectors().leftCols(keep), kept);
+      combine_columns(basis.vectors(), ritz.eigenvectors().leftCols(keep), kept);
       next = kept.leftCols(best);
     }
     else
-      combine_columns(V.leftCols(k), ritz.eigenvectors().leftCols(best), next);
+      combine_columns(basis.vectors(), ritz.eigenvectors().leftCols(best), next);
     u = next.col(0);
     if(block == 1)
-      hermitian_multiply_pair(A, M, same_pattern, next, AU, MX);  // next = u
+      hermitian_multiply_pair(A, M, pencil.same_pattern, next, AU, MX);  // next = u
     else
     {
       hermitian_multiply(M, next, MX);
@@ -409,15 +421,66 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
     }
     const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
     result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
-    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (sigma * MX.col(0).norm());
+    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (pencil.scale * MX.col(0).norm());
     if(result.residual <= options.residual_tolerance)
     {
       result.converged = true;
       break;
     }
   }
+  Mu = MX.col(0);  // MX = M u (u is next's first column)
+}
+
+// The smallest eigenpair of the pencil (A, M) (user manual, section "The
+// Smoothest Field").
+//
+// Inverse iteration, X <- (A - sigma M)^{-1} M X, on one factorization of
+// A - sigma M (sigma from the coarse estimate, or -epsilon; the factored
+// matrix is A + shift M with shift = -sigma), applied to a block of
+// `block_size` vectors (1 by default: a block of b vectors saves fewer solves
+// than the b times more work of a block solve), accelerated by Rayleigh-Ritz:
+// the iterates are kept as a basis V (orthonormal for the lumped mass
+// diag(M), which needs no sparse product and keeps V^* M V well conditioned)
+// and the best vector of span(V) is the smallest eigenpair of the small
+// pencil (V^* A V, V^* M V). Each step applies the solve to the current best
+// Ritz vectors, so the basis holds the iterates of a Krylov-like sequence; on
+// symmetric shapes, whose lowest eigenvalues cluster (a round sphere, a torus
+// of revolution), this converges where plain inverse iteration would need
+// thousands of steps. When V is full it is restarted with its `restart_size`
+// best Ritz vectors (the next ones matter where eigenvalues cluster) and the
+// previous best Ritz vectors, whose span holds the step direction (as in
+// LOBPCG). Only V is stored (not A V, M V), so the memory is about
+// `basis_size` + 2 `restart_size` vectors. The iteration stops when the
+// relative residual of the best Ritz pair reaches the tolerance;
+// `iterations` counts the solves (of a block each).
+template <typename SparseSolver>
+Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                      Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options)
+{
+  typedef std::chrono::steady_clock Clock;
+  const Eigen::Index n = A.rows();
+  Eigen_solve_result result;
+  const Hermitian_pencil pencil(A, M);
+
+  const auto t_start = Clock::now();
+  Coarse_estimate estimate;
+  if(n >= options.coarse_threshold)
+    estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
+  result.eigenvalue_bound = estimate.bound;
+  result.coarse_iterations = estimate.iterations;
+
+  const auto t0 = Clock::now();
+  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options, factored, result);
+  const auto t1 = Clock::now();
+
+  const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
+  Complex_dense_matrix start = random_block(n, block, options.random_seed);
+  if(estimate.vector.size() == n) start.col(0) = estimate.vector;
+  Complex_vector u, Mu;
+  iterate_with_rayleigh_ritz(pencil, factored, options, start, result, u, Mu);
   const auto t2 = Clock::now();
-  const double norm_u = std::sqrt((std::max)(0., u.dot(MX.col(0)).real()));  // MX = M u (u is next's first column)
+
+  const double norm_u = std::sqrt((std::max)(0., u.dot(Mu).real()));
   result.vector = (norm_u > 0.) ? Complex_vector(u / norm_u) : u;
   result.factorization_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   result.solve_ms = std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - t_start)).count();
@@ -428,4 +491,4 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INVERSE_ITERATION_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_EIGEN_SOLVE_H

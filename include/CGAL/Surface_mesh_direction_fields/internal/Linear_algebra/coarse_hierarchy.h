@@ -9,13 +9,13 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_COARSE_HIERARCHY_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_COARSE_HIERARCHY_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Sparse>
@@ -233,4 +233,4 @@ inline double smooth_and_bound(const Complex_sparse_matrix& A, const Complex_spa
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_EIGENVALUE_ESTIMATE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_COARSE_HIERARCHY_H

@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SECTION_INTEGRALS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SECTION_INTEGRALS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SECTION_INTEGRALS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SECTION_INTEGRALS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -135,4 +135,4 @@ inline std::complex<double> dirichlet_kernel_f2(double x)
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SECTION_INTEGRALS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_SECTION_INTEGRALS_H
