@@ -25,9 +25,8 @@
 // Huge pages: unless GLIBC_TUNABLES is already set or --no-huge-pages is
 // given, the program runs itself again with GLIBC_TUNABLES=glibc.malloc.hugetlb=1
 // (glibc >= 2.35; ignored by older ones), so that malloc asks the kernel for
-// transparent huge pages. On the virtual machines this was measured on, a
-// first touch of 4 KB pages costs about 11 us per page (2.8 ms per MB), which
-// made the 400,000-face field 1.7 times slower (see the README).
+// transparent huge pages. On the virtual machines this was measured on, the
+// first touch of fresh 4 KB pages is expensive (see README.md beside this file).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>

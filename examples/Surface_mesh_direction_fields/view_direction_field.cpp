@@ -30,12 +30,12 @@ int main(int argc, char** argv)
   }
   auto direction = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:direction").first;
   std::vector<std::pair<Mesh::Face_index, int> > singularities;
-  SMDF::compute_globally_optimal_directions(
+  const SMDF::Direction_field_result result = SMDF::compute_globally_optimal_directions(
     mesh, direction, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singularities)));
 
-  CGAL::draw(mesh, direction, singularities, CGAL::parameters::degree(degree));
-
-  const SMDF::IO::Direction_field_data data = SMDF::IO::make_direction_field_data(mesh, direction, degree, singularities);
+  // the plain data carries n (from the result): nothing asks for it again
+  const SMDF::Direction_field_data data = SMDF::make_direction_field_data(mesh, direction, result, singularities);
+  CGAL::draw(data);
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data);
   std::cout << singularities.size() << " singular faces, " << lines.size() << " field lines" << std::endl;
   SMDF::draw_direction_field(data, lines, "Field lines");

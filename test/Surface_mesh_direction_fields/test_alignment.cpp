@@ -1,4 +1,4 @@
-// Aligned and constrained fields (method.md, section 6):
+// Aligned and constrained fields (user manual, section "Aligned and Constrained Fields"):
 //  * lambda_t -> -infinity reproduces the normalized guidance; lambda_t -> lambda_1
 //    reproduces the smoothest field; t(lambda) is strictly monotone; a requested
 //    t is reached within 1e-6; guidance that is the smoothest field reproduces it;

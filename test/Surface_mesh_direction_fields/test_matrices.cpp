@@ -5,7 +5,7 @@
 //    the phases of the vertex bases (A = P^* L P), and M is scale-covariant;
 //  * A and M are Hermitian, A is positive semi-definite for s = -1, 0, 1;
 //  * on a round sphere of radius R, lambda_1 = n (1 - s) / R^2 (pins every sign
-//    and conjugation of method.md, section 4);
+//    and conjugation of the user manual, section "Local Matrices");
 //  * the coarse estimate of the eigen-solve: the coarse matrices are P^* A P
 //    and P^* M P, the bound is >= lambda_1, and the shifted factorization (or
 //    its fallback, when the shift is too large) gives the eigenpair of the

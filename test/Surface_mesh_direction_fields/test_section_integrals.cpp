@@ -1,5 +1,5 @@
 // f1, f2 and the mass factor against a 150-digit reference evaluation of their
-// closed forms (method.md, section 4), on a dense sample of [-6 pi, 6 pi] that
+// closed forms (user manual, section "Energies"), on a dense sample of [-6 pi, 6 pi] that
 // includes |Omega| < 1e-6 and Omega = 0.
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/section_integrals.h>

@@ -240,7 +240,7 @@ public:
     update_matrices(result.degree, result.smoothness_parameter);
     result.timings.setup_ms = milliseconds_since(start);
 
-    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned Fields")
+    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned and Constrained Fields")
     const Field_requests requests = read_field_requests(np, result.degree, linear_solver);
 
     // 3. one problem per component: the smallest eigenvector, or the aligned / constrained solve
@@ -411,7 +411,7 @@ private:
   }
 
   // The aligned and/or constrained field of component c: (A - lambda_t M) u = M q
-  // with u fixed on the constrained vertices (manual, "Aligned Fields"),
+  // with u fixed on the constrained vertices (manual, "Aligned and Constrained Fields"),
   // normalized to ||u||_M = 1.
   internal::Complex_vector aligned_field(std::size_t c, const internal::Complex_vector& q, bool aligned,
                                          const internal::Constraints& constraints,

@@ -152,6 +152,12 @@ inline void draw_direction_field(const Direction_field_data& data, const std::ve
 
 } // namespace Surface_mesh_direction_fields
 
+inline void draw(const Surface_mesh_direction_fields::Direction_field_data& data)
+{
+  Surface_mesh_direction_fields::draw_direction_field(data, std::vector<Surface_mesh_direction_fields::Streamline>(),
+                                                      "Direction field");
+}
+
 template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange,
           typename NamedParameters = parameters::Default_named_parameters>
 void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const SingularityRange& singularities,
@@ -160,8 +166,7 @@ void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const Sin
   const int degree = parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree), 1);
   const Surface_mesh_direction_fields::Direction_field_data data =
     Surface_mesh_direction_fields::make_direction_field_data(tmesh, direction_map, degree, singularities, np);
-  Surface_mesh_direction_fields::draw_direction_field(data, std::vector<Surface_mesh_direction_fields::Streamline>(),
-                                                      "Direction field");
+  draw(data);
 }
 
 } // namespace CGAL

@@ -25,9 +25,9 @@
 //
 // The first write to a fresh 4 KB page costs a page fault. On the virtual
 // machines the benchmark was measured on (Firecracker, with free page
-// reporting) a fault costs about 11 us, 2.8 ms per MB: at 400,000 faces the
-// page faults of the 58 MB of local matrices took more time than computing
-// them. A 2 MB huge page costs one fault. Linux grants huge pages to a range
+// reporting) faults are expensive enough that the page faults of the local
+// matrices took more time than computing them (benchmark's README). A 2 MB
+// huge page costs one fault. Linux grants huge pages to a range
 // advised with MADV_HUGEPAGE when the system setting
 // (/sys/kernel/mm/transparent_hugepage/enabled) is `madvise`, as on the
 // machines measured, or `always`; elsewhere, or with

@@ -24,7 +24,7 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-// The package's vertex normals (user manual, section "Outputs"): the unit
+// The package's vertex normals (user manual, section "Back to 3D Directions"): the unit
 // normals of the faces around v weighted by v's corner angle in each, summed
 // in the order corners_of(v) lists them, normalized. The library passes its
 // (possibly mollified) corner angles and counter-clockwise fans; the file

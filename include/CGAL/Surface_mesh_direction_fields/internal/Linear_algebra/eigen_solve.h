@@ -34,7 +34,7 @@
 #include <type_traits>
 #include <vector>
 
-// The smallest generalized eigenpair of A u = lambda M u (method.md, section 5),
+// The smallest generalized eigenpair of A u = lambda M u (user manual, section "The Smoothest Field"),
 // by inverse iteration on one factorization of A - sigma M, accelerated by
 // Rayleigh-Ritz on the space of its iterates, through any model of CGAL's
 // `SparseLinearAlgebraWithFactorTraits_d` with complex scalars. The shift

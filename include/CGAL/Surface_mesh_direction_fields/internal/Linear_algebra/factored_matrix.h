@@ -54,8 +54,34 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// factor_shifted() and factor_shifted_if_positive_definite() of both
+// versions of Factored_matrix below: they factor A + shift M, in the form
+// Derived::matrix_to_factor() gives (the whole matrix, or the one triangle
+// a Cholesky solver reads). A negative shift moves the matrix towards
+// A - lambda_1 M, where inverse iteration converges fastest.
+template <typename Derived>
+class Shifted_factorization
+{
+  Derived& derived() { return static_cast<Derived&>(*this); }
+
+public:
+  void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
+                      bool same_pattern = false)
+  {
+    derived().factor(Derived::matrix_to_factor(A, M, shift), same_pattern);
+  }
+
+  // Returns false, having factored nothing usable, when A + shift M is not
+  // positive definite (as far as the solver can tell: see `detects_indefinite`).
+  bool factor_shifted_if_positive_definite(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                           double shift, bool same_pattern = false)
+  {
+    return derived().factor_if_positive_definite(Derived::matrix_to_factor(A, M, shift), same_pattern);
+  }
+};
+
 template <typename SparseSolver, typename Enable = void>
-class Factored_matrix
+class Factored_matrix : public Shifted_factorization<Factored_matrix<SparseSolver, Enable> >
 {
   typedef typename SparseSolver::Matrix Solver_matrix;
   typedef typename SparseSolver::Vector Solver_vector;
@@ -99,17 +125,10 @@ public:
     return true;
   }
 
-  // Factors A + shift M.
-  void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
-                      bool same_pattern = false)
+  static Complex_sparse_matrix matrix_to_factor(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                                double shift)
   {
-    factor(shifted_matrix(A, M, shift), same_pattern);
-  }
-
-  bool factor_shifted_if_positive_definite(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                           double shift, bool same_pattern = false)
-  {
-    return factor_if_positive_definite(shifted_matrix(A, M, shift), same_pattern);
+    return shifted_matrix(A, M, shift);
   }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
@@ -215,10 +234,10 @@ struct Cholmod_messages_off<EigenSolver, std::void_t<decltype(std::declval<Eigen
 // is high from a few hundred thousand vertices on: at 800,000 vertices AMD
 // gives 50 million entries in L (30 Gflop), METIS 32 million (8 Gflop), and
 // CHOLMOD keeps METIS. From `metis_only_size` rows on, METIS is therefore
-// asked for directly, which saves the AMD ordering (the analysis took
-// 5.3-6.1 s there, 4.7-5.0 s with METIS alone); at 200,000 vertices CHOLMOD
-// keeps AMD (flops = 306 nnz(L); METIS alone took 1 s there, AMD 0.25 s),
-// and the ratio, growing like |V|^0.47, reaches 500 near 570,000 vertices.
+// asked for directly, which saves the AMD ordering; at 200,000 vertices
+// CHOLMOD keeps AMD (flops = 306 nnz(L), and METIS alone is slower than AMD
+// there), and the ratio, growing like |V|^0.47, reaches 500 near 570,000
+// vertices. The times are in the benchmark's README.
 // If METIS is not available, the analysis is redone with the defaults.
 constexpr Eigen::Index metis_only_size = 600000;
 
@@ -287,10 +306,8 @@ std::false_type is_cholmod_solver(...);
 // The parallel solve with CHOLMOD's factor, when the solver is one of
 // Eigen's CHOLMOD solvers and its factor is supernodal, complex, LL^*, with
 // int indices (what CholmodSupernodalLLT computes), and large enough: below
-// about a million stored entries CHOLMOD's solve is as fast or faster (one
-// solve on the shared meshes: fertility, 9,000 faces, 0.45 against 0.66 ms;
-// camelhead, 23,000 faces, 1.0 ms both; the bunny, 69,000 faces, 12 against
-// 7.7 ms). Empty otherwise.
+// about a million stored entries CHOLMOD's solve is as fast or faster
+// (measured on the shared meshes, see the benchmark's README). Empty otherwise.
 constexpr std::size_t parallel_solve_minimum_entries = std::size_t(1) << 20;
 
 class Parallel_supernodal_solve
@@ -348,6 +365,9 @@ public:
 template <typename EigenSolver>
 class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
                       std::enable_if_t<std::is_same<typename EigenSolver::MatrixType, Complex_sparse_matrix>::value> >
+  : public Shifted_factorization<Factored_matrix<
+      CGAL::Eigen_solver_traits<EigenSolver>,
+      std::enable_if_t<std::is_same<typename EigenSolver::MatrixType, Complex_sparse_matrix>::value> > >
 {
   typedef CGAL::Eigen_solver_traits<EigenSolver> Traits;
   Traits& m_traits;
@@ -364,6 +384,8 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
     m_analyzed = true;
   }
 
+public:
+  // A + shift M, or only its lower triangle if that is all the solver reads.
   static Complex_sparse_matrix matrix_to_factor(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
                                                 double shift)
   {
@@ -373,7 +395,6 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
       return shifted_matrix(A, M, shift);
   }
 
-public:
   static constexpr bool detects_indefinite = Detects_indefinite<EigenSolver>::value;
 
   explicit Factored_matrix(Traits& traits) : m_traits(traits) {}
@@ -405,18 +426,6 @@ public:
     return m_analyzed;
   }
 
-  // Factors A + shift M (only its lower triangle, if that is all the solver reads).
-  void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
-                      bool same_pattern = false)
-  {
-    factor(matrix_to_factor(A, M, shift), same_pattern);
-  }
-
-  bool factor_shifted_if_positive_definite(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                           double shift, bool same_pattern = false)
-  {
-    return factor_if_positive_definite(matrix_to_factor(A, M, shift), same_pattern);
-  }
 
   // Whether a single right-hand side is solved by the parallel solve.
   bool solves_in_parallel() const { return m_parallel_solve.available(); }

@@ -15,7 +15,6 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
 #include <Eigen/Dense>

@@ -16,7 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 
 #include <Eigen/Sparse>
 
@@ -24,7 +24,7 @@
 #include <limits>
 #include <vector>
 
-// The aligned and constrained fields (method.md, section 6): the linear system
+// The aligned and constrained fields (user manual, section "Aligned and Constrained Fields"): the linear system
 //     (A - lambda M) u = M q,     u_C = c on the constrained vertices C,
 // i.e. (A - lambda M)_FF u_F = (M q)_F - (A - lambda M)_FC c on the free ones.
 // For lambda < lambda_1 the matrix is Hermitian positive definite. With

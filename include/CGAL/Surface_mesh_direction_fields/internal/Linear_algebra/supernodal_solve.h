@@ -32,9 +32,9 @@
 // layout, read in place), the subtrees of its elimination tree in parallel.
 //
 // CHOLMOD's own solve runs one supernode after the other, in BLAS level 2,
-// and is single-threaded for one right-hand side (55 ms at 200,000 unknowns,
-// against 64 ms for two independent solves on the two cores at once: memory
-// bandwidth is not what limits it). The supernodes of disjoint subtrees are
+// and is single-threaded for one right-hand side (two independent solves on
+// two cores take barely longer than one: memory bandwidth is not what limits
+// it). The supernodes of disjoint subtrees are
 // independent, except that a subtree's forward solve subtracts from the
 // unknowns of its ancestors. The tree is therefore cut into a "top" (the
 // ancestors) and independent subtrees ("tasks") of bounded work; each task
@@ -299,9 +299,9 @@ inline Complex adjoint_dot(const Complex* b, const Complex* t, Eigen::Index coun
 // Asks the processor to start loading the entries of supernode s (a hint,
 // see prefetch.h). The backward solve walks the supernodes from the last to
 // the first, and the hardware prefetcher then lagged behind: asking for the
-// next supernode while one is solved took the backward solve of the subtrees
-// from 13 to 11 ms at 400,000 faces (the forward solve, which walks up
-// through memory, gained nothing from it).
+// next supernode while one is solved makes the backward solve of the
+// subtrees faster (the forward solve, which walks up through memory, gains
+// nothing from it).
 template <typename Index>
 void prefetch_supernode(const Supernodal_factor_view<Index>& L, std::size_t s)
 {

@@ -121,7 +121,7 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
 }
 
 // How strongly the field follows its guidance: lambda_t, or the alignment
-// weight t from which lambda_t is found (user manual, "Aligned Fields").
+// weight t from which lambda_t is found (user manual, "Aligned and Constrained Fields").
 struct Alignment_request
 {
   bool lambda_given = false, weight_given = false;

@@ -24,7 +24,7 @@
 #include <complex>
 #include <vector>
 
-// Back to 3D (method.md, section 8): the coefficient u_i (n-th power, rescaled
+// Back to 3D (user manual, section "Back to 3D Directions"): the coefficient u_i (n-th power, rescaled
 // angles from X_i) becomes a unit vector orthogonal to the vertex normal.
 //
 // 1. phi = arg(u_i) / n, taken in [0, 2 pi / n), is a rescaled angle from X_i;

@@ -27,7 +27,7 @@
 #include <vector>
 
 // Guidance fields, as coefficient vectors in the n-th power representation
-// (method.md, section 6):
+// (user manual, section "Aligned and Constrained Fields"):
 //  * the pairing vector of the discrete Hopf differential (principal curvature);
 //  * a 3D tangent vector per vertex (user guidance), mapped to coefficients by
 //    the exact inverse of the layout of extrinsic_directions.h;
@@ -71,8 +71,8 @@ inline std::vector<std::complex<double> > hopf_differential_pairing(const Indexe
 
 // The principal-curvature line field (n = 2) of every component: the Hopf
 // differential's coefficients q solve M_2 q = q~, with q~ its pairing above
-// and M_2 the mass matrix of the degree-2 connection (user manual, section
-// "Aligned Fields").
+// and M_2 the mass matrix of the degree-2 connection (user manual,
+// section "Aligned and Constrained Fields").
 template <typename SparseSolver>
 std::vector<std::complex<double> > curvature_line_field(const Indexed_mesh& mesh, const Tangent_spaces& ts,
                                                         const Components& components, SparseSolver& solver)

@@ -20,7 +20,7 @@
 
 // The scalar kernels of the local (per-triangle) matrices: integrals of products
 // of piecewise-linear basis sections over a triangle carrying holonomy `Omega`
-// (method.md, section 4). No mesh here, only functions of one real number.
+// (user manual, section "Energies"). No mesh here, only functions of one real number.
 //
 // All three kernels have the form  F(x) = P(x, e^{ix}) / x^4  whose numerator
 // cancels to order x^4 (resp. x^5) at x = 0, so the closed forms lose up to
@@ -97,38 +97,44 @@ sum_series_in_ix(const std::array<double, section_integral_series_terms>& c, dou
 
 inline bool use_series(double x) { return std::abs(x) < section_integral_series_threshold; }
 
+// A kernel at x: its Taylor series near 0, where the closed form loses its
+// digits, else closed_form(e^{ix}, x^2).
+template <typename ClosedForm>
+std::complex<double> series_or_closed_form(const std::array<double, section_integral_series_terms>& series, double x,
+                                           const ClosedForm& closed_form)
+{
+  if(use_series(x)) return sum_series_in_ix(series, x);
+  return closed_form(std::polar(1., x), x * x);
+}
+
 /// Mass kernel: the off-diagonal local mass entry is `r_jk |t| mass_factor(Omega)`.
 /// `mass_factor(x) = (6 e^{ix} - 6 - 6ix + 3x^2 + ix^3) / (3 x^4)`, equal to 1/12 at 0.
 inline std::complex<double> mass_factor(double x)
 {
-  if(use_series(x))
-    return sum_series_in_ix(Section_integral_series::get().mass, x);
-  const std::complex<double> I(0., 1.);
-  const std::complex<double> e = std::polar(1., x);
-  const double x2 = x * x;
-  return (6. * e - 6. - 6. * I * x + 3. * x2 + I * (x2 * x)) / (3. * x2 * x2);
+  return series_or_closed_form(Section_integral_series::get().mass, x, [x](std::complex<double> e, double x2) {
+    const std::complex<double> I(0., 1.);
+    return (6. * e - 6. - 6. * I * x + 3. * x2 + I * (x2 * x)) / (3. * x2 * x2);
+  });
 }
 
 /// Dirichlet kernel multiplying `|p_ij|^2 + |p_ik|^2`; `f1(0) = 0`.
 inline std::complex<double> dirichlet_kernel_f1(double x)
 {
-  if(use_series(x))
-    return sum_series_in_ix(Section_integral_series::get().f1, x);
-  const std::complex<double> I(0., 1.);
-  const std::complex<double> e = std::polar(1., x);
-  const double x2 = x * x, x4 = x2 * x2;
-  return (3. + I * x + x4 / 24. - I * (x4 * x) / 60. + (-3. + 2. * I * x + x2 / 2.) * e) / x4;
+  return series_or_closed_form(Section_integral_series::get().f1, x, [x](std::complex<double> e, double x2) {
+    const std::complex<double> I(0., 1.);
+    const double x4 = x2 * x2;
+    return (3. + I * x + x4 / 24. - I * (x4 * x) / 60. + (-3. + 2. * I * x + x2 / 2.) * e) / x4;
+  });
 }
 
 /// Dirichlet kernel multiplying `<p_ij, p_ik>`; `f2(0) = -1/4`.
 inline std::complex<double> dirichlet_kernel_f2(double x)
 {
-  if(use_series(x))
-    return sum_series_in_ix(Section_integral_series::get().f2, x);
-  const std::complex<double> I(0., 1.);
-  const std::complex<double> e = std::polar(1., x);
-  const double x2 = x * x, x4 = x2 * x2;
-  return (4. + I * x - I * (x2 * x) / 6. - x4 / 12. + I * (x4 * x) / 30. + (-4. + 3. * I * x + x2) * e) / x4;
+  return series_or_closed_form(Section_integral_series::get().f2, x, [x](std::complex<double> e, double x2) {
+    const std::complex<double> I(0., 1.);
+    const double x4 = x2 * x2;
+    return (4. + I * x - I * (x2 * x) / 6. - x4 / 12. + I * (x4 * x) / 30. + (-4. + 3. * I * x + x2) * e) / x4;
+  });
 }
 
 } // namespace internal

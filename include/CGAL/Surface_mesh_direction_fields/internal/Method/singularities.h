@@ -24,7 +24,7 @@
 #include <complex>
 #include <vector>
 
-// Discrete Poincare-Hopf index of a vertex field per face (method.md, section 7).
+// Discrete Poincare-Hopf index of a vertex field per face (user manual, section "Singularities").
 // For the halfedge i -> j, omega_ij in (-pi, pi] is the rotation from the
 // transported coefficient r_ij u_i to u_j; around face t the rotations and the
 // curvature Omega_t add up to 2 pi index_t. Because Omega_t = n kappa_t is

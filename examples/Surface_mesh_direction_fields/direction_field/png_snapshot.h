@@ -6,6 +6,8 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
 
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,13 +19,15 @@
 
 namespace png_snapshot {
 
-typedef std::array<double, 3> V3;
-inline V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline V3 add(const V3& a, const V3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline V3 mul(double s, const V3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-inline double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline V3 cross(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-inline V3 unit(const V3& a) { double l = std::sqrt(dot(a, a)); return l > 0 ? mul(1. / l, a) : a; }
+// the package's 3-vector toolkit
+typedef CGAL::Surface_mesh_direction_fields::internal::Vec3 V3;
+using CGAL::Surface_mesh_direction_fields::internal::cross;
+using CGAL::Surface_mesh_direction_fields::internal::dot;
+using CGAL::Surface_mesh_direction_fields::internal::norm;
+using CGAL::Surface_mesh_direction_fields::internal::operator+;
+using CGAL::Surface_mesh_direction_fields::internal::operator-;
+using CGAL::Surface_mesh_direction_fields::internal::operator*;
+inline V3 unit(const V3& a) { return CGAL::Surface_mesh_direction_fields::internal::normalized(a); }
 
 struct Scene
 {
@@ -198,8 +202,8 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
   V3 lo = s.points[0], hi = s.points[0];
   for(const V3& p : s.points)
     for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
-  const V3 center = mul(0.5, add(lo, hi));
-  const double radius = 0.5 * std::sqrt(dot(sub(hi, lo), sub(hi, lo)));
+  const V3 center = 0.5 * (lo + hi);
+  const double radius = 0.5 * norm(hi - lo);
   view = unit(view);
   V3 up0 = {0, 1, 0};
   if(std::abs(dot(up0, view)) > 0.95) up0 = {0, 0, 1};
@@ -207,7 +211,7 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
   const V3 up = cross(view, right);
   const double scale = 0.48 * (std::min)(width, height) / radius;
   auto project = [&](const V3& p) {
-    const V3 q = sub(p, center);
+    const V3 q = p - center;
     return V3{0.5 * width + scale * dot(q, right), 0.5 * height - scale * dot(q, up), dot(q, view) * scale};
   };
 
@@ -218,13 +222,13 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
   // Vertex normals for rotating the directions; mean edge length for their size.
   std::vector<V3> normals(s.points.size(), V3{0, 0, 0});
   double edge_sum = 0.;
-  const V3 light = unit(add(view, V3{0.2, 0.5, 0.1}));
+  const V3 light = unit(view + V3{0.2, 0.5, 0.1});
   for(std::size_t f = 0; f < s.triangles.size(); ++f)
   {
     const auto& t = s.triangles[f];
-    const V3 n = cross(sub(s.points[t[1]], s.points[t[0]]), sub(s.points[t[2]], s.points[t[0]]));
-    for(int c = 0; c < 3; ++c) normals[t[c]] = add(normals[t[c]], n);
-    for(int c = 0; c < 3; ++c) edge_sum += std::sqrt(dot(sub(s.points[t[(c + 1) % 3]], s.points[t[c]]), sub(s.points[t[(c + 1) % 3]], s.points[t[c]])));
+    const V3 n = cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]);
+    for(int c = 0; c < 3; ++c) normals[t[c]] = normals[t[c]] + n;
+    for(int c = 0; c < 3; ++c) edge_sum += norm(s.points[t[(c + 1) % 3]] - s.points[t[c]]);
     const V3 nu = unit(n);
     const double shade = 0.35 + 0.65 * std::abs(dot(nu, light));
     std::array<unsigned char, 3> col = {static_cast<unsigned char>(205 * shade), static_cast<unsigned char>(210 * shade),
@@ -266,12 +270,12 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
     for(int k = 0; k < s.degree; ++k)
     {
       const double a = 2. * pi * k / s.degree;
-      const V3 dk = add(mul(std::cos(a), d), mul(std::sin(a), e));
-      const V3 tip = add(s.points[i], mul(glyph, dk));
+      const V3 dk = std::cos(a) * d + std::sin(a) * e;
+      const V3 tip = s.points[i] + glyph * dk;
       // a vector field (n = 1) gets a two-sided stroke with a dark head
       canvas.line(screen[i], project(tip), {20, 20, 20}, 3.);
       if(s.degree == 1)
-        canvas.line(screen[i], project(add(s.points[i], mul(-0.6 * glyph, dk))), {110, 110, 110}, 3.);
+        canvas.line(screen[i], project(s.points[i] + (-0.6 * glyph) * dk), {110, 110, 110}, 3.);
     }
   }
   // Mark singular faces so that they are seen even when smaller than a pixel.
@@ -279,7 +283,7 @@ inline bool render(const Scene& s, const std::string& path, int width = 1024, in
   {
     if(s.face_index[f] == 0) continue;
     const auto& t = s.triangles[f];
-    const V3 c = mul(1. / 3., add(add(screen[t[0]], screen[t[1]]), screen[t[2]]));
+    const V3 c = (1. / 3.) * (screen[t[0]] + screen[t[1]] + screen[t[2]]);
     const int x = static_cast<int>(c[0]), y = static_cast<int>(c[1]);
     if(x < 0 || y < 0 || x >= width || y >= height || c[2] + 2. < canvas.depth[y * width + x]) continue;
     canvas.disc(c, 6., s.face_index[f] > 0 ? std::array<unsigned char, 3>{220, 30, 30}

@@ -6,8 +6,8 @@
 //  1. points with identical coordinates are merged (the first one is kept);
 //  2. repeated consecutive vertices are removed from each polygon, and polygons
 //     left with fewer than 3 vertices are dropped;
-//  3. polygons with more than 3 vertices are triangulated (ear clipping in the
-//     plane of their Newell normal; a fan if that fails);
+//  3. polygons with more than 3 vertices are triangulated by CGAL's
+//     Polygon_mesh_processing (a fan if that fails);
 //  4. repeated triangles (same three vertices) are dropped;
 //  5. the triangles are oriented consistently, and non-manifold vertices are
 //     duplicated, by CGAL::Polygon_mesh_processing::orient_polygon_soup();
@@ -18,6 +18,7 @@
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -82,54 +83,24 @@ namespace read_and_repair_internal {
 
 typedef std::array<double, 3> P3;
 
-// Ear clipping of a simple polygon given by 3D points; returns index triples
-// into `poly`, or an empty vector if the polygon is not simple enough.
-inline std::vector<std::array<std::size_t, 3> > ear_clip(const std::vector<P3>& pts)
+// The triangles of a polygon with more than three vertices, as index triples
+// into it: CGAL's hole filling on the polygon as a closed polyline
+// (Polygon_mesh_processing::triangulate_hole_polyline(), the same
+// triangulation as PMP's triangulate_faces()), a fan where it finds none.
+template <typename Point>
+std::vector<std::array<std::size_t, 3> > triangulate_polygon(const std::vector<Point>& polygon)
 {
-  const std::size_t k = pts.size();
-  P3 n = {0, 0, 0};  // Newell normal
-  for(std::size_t i = 0; i < k; ++i)
+  std::vector<CGAL::Triple<int, int, int> > triples;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polygon, std::back_inserter(triples));
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(const auto& t : triples)
+    triangles.push_back({std::size_t(t.first), std::size_t(t.second), std::size_t(t.third)});
+  if(triangles.size() + 2 != polygon.size())  // not a triangulation of the whole polygon
   {
-    const P3& a = pts[i];
-    const P3& b = pts[(i + 1) % k];
-    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    triangles.clear();
+    for(std::size_t i = 1; i + 1 < polygon.size(); ++i) triangles.push_back({0, i, i + 1});
   }
-  int drop = 0;
-  for(int c = 1; c < 3; ++c) if(std::abs(n[c]) > std::abs(n[drop])) drop = c;
-  if(n[drop] == 0.) return {};
-  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-  const double sign = n[drop] > 0 ? 1. : -1.;  // keep the polygon counter-clockwise in (u, v)
-  std::vector<std::array<double, 2> > q(k);
-  for(std::size_t i = 0; i < k; ++i) q[i] = {pts[i][u], sign * pts[i][v]};
-  auto cross = [&](std::size_t a, std::size_t b, std::size_t c) {
-    return (q[b][0] - q[a][0]) * (q[c][1] - q[a][1]) - (q[b][1] - q[a][1]) * (q[c][0] - q[a][0]);
-  };
-  std::vector<std::size_t> idx(k);
-  for(std::size_t i = 0; i < k; ++i) idx[i] = i;
-  std::vector<std::array<std::size_t, 3> > tris;
-  std::size_t guard = 0;
-  while(idx.size() > 3 && guard++ < 4 * k * k)
-  {
-    bool clipped = false;
-    for(std::size_t i = 0; i < idx.size() && !clipped; ++i)
-    {
-      const std::size_t a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i], c = idx[(i + 1) % idx.size()];
-      if(cross(a, b, c) <= 0.) continue;  // reflex or flat corner
-      bool empty = true;
-      for(std::size_t j : idx)
-        if(j != a && j != b && j != c && cross(a, b, j) >= 0. && cross(b, c, j) >= 0. && cross(c, a, j) >= 0.)
-        { empty = false; break; }
-      if(!empty) continue;
-      tris.push_back({a, b, c});
-      idx.erase(idx.begin() + static_cast<long>(i));
-      clipped = true;
-    }
-    if(!clipped) return {};
-  }
-  if(idx.size() == 3) tris.push_back({idx[0], idx[1], idx[2]});
-  return tris;
+  return triangles;
 }
 
 struct Counting_visitor : public CGAL::Polygon_mesh_processing::Default_orientation_visitor
@@ -186,14 +157,12 @@ inline void check_off_face_sizes(const std::string& path)
 
 } // namespace read_and_repair_internal
 
-// Throws Mesh_input_error with a one-line message when the file cannot be used.
-template <typename Mesh>
-Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
+namespace read_and_repair_internal {
+
+// The file as a polygon soup, checked: finite coordinates, valid indices, a face.
+template <typename Point>
+void read_soup(const std::string& path, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
 {
-  typedef typename Mesh::Point Point;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Mesh::Face_index Face_index;
-  using read_and_repair_internal::P3;
   {
     std::ifstream probe(path);
     if(!probe) throw Mesh_input_error("cannot open '" + path + "'");
@@ -201,14 +170,9 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
   std::string extension = path.substr(path.find_last_of('.') + 1);
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if(path.find('.') != std::string::npos && extension == "off")
-    read_and_repair_internal::check_off_face_sizes(path);
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t> > polygons;
+    check_off_face_sizes(path);
   if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
     throw Mesh_input_error("cannot read '" + path + "' as a mesh (OFF, OBJ, PLY or STL)");
-  Repaired_mesh<Mesh> out;
-  out.file_vertices = points.size();
-  out.file_faces = polygons.size();
   if(polygons.empty()) throw Mesh_input_error("'" + path + "' holds no face");
   for(std::size_t i = 0; i < points.size(); ++i)
     if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y())) ||
@@ -219,22 +183,31 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
       if(v >= points.size())
         throw Mesh_input_error("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                                ", which does not exist");
+}
 
-  // 1. merge identical points
+// Step 1: the first point with the same coordinates, for every point.
+template <typename Point>
+std::vector<std::size_t> first_copies(const std::vector<Point>& points, Repair_report& report)
+{
   std::vector<std::size_t> first_copy(points.size());
+  std::map<std::array<double, 3>, std::size_t> seen;
+  for(std::size_t i = 0; i < points.size(); ++i)
   {
-    std::map<std::array<double, 3>, std::size_t> seen;
-    for(std::size_t i = 0; i < points.size(); ++i)
-    {
-      const P3 key = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};
-      auto it = seen.emplace(key, i).first;
-      first_copy[i] = it->second;
-      if(it->second != i) ++out.report.merged_points;
-    }
+    const P3 key = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};
+    auto it = seen.emplace(key, i).first;
+    first_copy[i] = it->second;
+    if(it->second != i) ++report.merged_points;
   }
-  // 2-4. clean, triangulate, deduplicate
-  std::vector<std::vector<std::size_t> > triangles;
-  std::vector<std::size_t> polygon_of_triangle;
+  return first_copy;
+}
+
+// Steps 2-4: each polygon without repeated vertices, triangulated, without
+// repeated triangles; the polygon of each triangle.
+template <typename Point>
+void clean_and_triangulate(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons,
+                           const std::vector<std::size_t>& first_copy, std::vector<std::vector<std::size_t> >& triangles,
+                           std::vector<std::size_t>& polygon_of_triangle, Repair_report& report)
+{
   std::set<std::array<std::size_t, 3> > triangle_set;
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
@@ -245,35 +218,54 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
       if(poly.empty() || poly.back() != w) poly.push_back(w);
     }
     while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-    if(poly.size() < 3) { ++out.report.degenerate_polygons; continue; }
+    if(poly.size() < 3) { ++report.degenerate_polygons; continue; }
     std::vector<std::array<std::size_t, 3> > local;
     if(poly.size() == 3) local.push_back({0, 1, 2});
     else
     {
-      std::vector<P3> pts;
-      for(std::size_t v : poly)
-        pts.push_back({CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())});
-      local = read_and_repair_internal::ear_clip(pts);
-      if(local.empty())
-        for(std::size_t i = 1; i + 1 < poly.size(); ++i) local.push_back({0, i, i + 1});
-      ++out.report.triangulated_polygons;
-      out.report.triangles_from_polygons += local.size();
+      std::vector<Point> corners;
+      for(std::size_t v : poly) corners.push_back(points[v]);
+      local = triangulate_polygon(corners);
+      ++report.triangulated_polygons;
+      report.triangles_from_polygons += local.size();
     }
     for(const auto& t : local)
     {
       std::array<std::size_t, 3> tri = {poly[t[0]], poly[t[1]], poly[t[2]]};
-      if(tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) { ++out.report.degenerate_polygons; continue; }
+      if(tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) { ++report.degenerate_polygons; continue; }
       std::array<std::size_t, 3> key = tri;
       std::sort(key.begin(), key.end());
-      if(!triangle_set.insert(key).second) { ++out.report.repeated_triangles; continue; }
+      if(!triangle_set.insert(key).second) { ++report.repeated_triangles; continue; }
       triangles.push_back({tri[0], tri[1], tri[2]});
       polygon_of_triangle.push_back(f);
     }
   }
+}
+
+} // namespace read_and_repair_internal
+
+// Throws Mesh_input_error with a one-line message when the file cannot be used.
+template <typename Mesh>
+Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
+{
+  typedef typename Mesh::Point Point;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Face_index Face_index;
+  namespace repair = read_and_repair_internal;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  repair::read_soup(path, points, polygons);
+  Repaired_mesh<Mesh> out;
+  out.file_vertices = points.size();
+  out.file_faces = polygons.size();
+  const std::vector<std::size_t> first_copy = repair::first_copies(points, out.report);
+  std::vector<std::vector<std::size_t> > triangles;
+  std::vector<std::size_t> polygon_of_triangle;
+  repair::clean_and_triangulate(points, polygons, first_copy, triangles, polygon_of_triangle, out.report);
   if(triangles.empty()) throw Mesh_input_error("'" + path + "' holds no usable face");
 
   // 5. orientation and non-manifold vertices (new points are appended)
-  read_and_repair_internal::Counting_visitor visitor;
+  repair::Counting_visitor visitor;
   visitor.reversed = &out.report.reoriented_triangles;
   visitor.duplicated = &out.report.duplicated_vertices;
   std::vector<std::pair<std::size_t, std::size_t> > copies;

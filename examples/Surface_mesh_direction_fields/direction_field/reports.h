@@ -1,0 +1,118 @@
+// What the command-line program direction_field prints: one line of JSON
+// (--json, --json-file: the keys are a contract, only ever extended) or a
+// short human-readable summary.
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_REPORTS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_REPORTS_H
+
+#include "command_line_options.h"
+#include "read_and_repair_mesh.h"
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <string>
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+
+inline std::string json_escape(const std::string& s)
+{
+  std::string out;
+  for(char c : s)
+  {
+    if(c == '"' || c == '\\') { out += '\\'; out += c; }
+    else if(static_cast<unsigned char>(c) < 0x20) { char buf[8]; std::snprintf(buf, sizeof buf, "\\u%04x", c); out += buf; }
+    else out += c;
+  }
+  return out;
+}
+
+inline std::string number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
+
+// The largest component: the one whose lambda and t the JSON reports.
+inline const SMDF::Component_report& main_component(const SMDF::Direction_field_result& r)
+{
+  std::size_t best = 0;
+  for(std::size_t i = 1; i < r.components.size(); ++i)
+    if(r.components[i].number_of_vertices > r.components[best].number_of_vertices) best = i;
+  return r.components[best];
+}
+
+template <typename Mesh>
+void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
+{
+  const Mesh& mesh = input.mesh;
+  const Repair_report& rep = input.report;
+  int chi = 0;
+  for(const auto& c : r.components) chi += c.euler_characteristic;
+  os << "{\"mesh\":\"" << json_escape(o.mesh) << "\""
+     << ",\"vertices\":" << input.file_vertices << ",\"faces\":" << input.file_faces
+     << ",\"mesh_vertices\":" << mesh.number_of_vertices() << ",\"mesh_faces\":" << mesh.number_of_faces()
+     << ",\"components\":" << r.components.size() << ",\"isolated_vertices\":" << r.number_of_isolated_vertices
+     << ",\"euler_characteristic\":" << chi << ",\"degree\":" << r.degree << ",\"s\":" << number(r.smoothness_parameter);
+  auto array = [&](const char* name, auto get) {
+    os << ",\"" << name << "\":[";
+    for(std::size_t i = 0; i < r.components.size(); ++i) os << (i ? "," : "") << get(r.components[i]);
+    os << "]";
+  };
+  array("eigenvalues", [](const SMDF::Component_report& c) { return number(c.eigenvalue); });
+  array("component_euler_characteristics", [](const SMDF::Component_report& c) { return std::to_string(c.euler_characteristic); });
+  array("component_index_sums", [](const SMDF::Component_report& c) { return std::to_string(c.index_sum); });
+  os << ",\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
+     << ",\"converged\":" << (r.converged ? "true" : "false")
+     << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
+     << ",\"mollification\":" << number(r.mollification)
+     << ",\"lambda\":" << number(main_component(r).lambda)
+     << ",\"alignment_weight\":" << number(main_component(r).alignment_weight)
+     << ",\"eigenvalue_bound\":" << number(main_component(r).eigenvalue)
+     << ",\"repairs\":{\"merged_points\":" << rep.merged_points << ",\"degenerate_faces_removed\":" << rep.degenerate_polygons
+     << ",\"polygons_triangulated\":" << rep.triangulated_polygons << ",\"triangles_from_polygons\":" << rep.triangles_from_polygons
+     << ",\"repeated_faces_removed\":" << rep.repeated_triangles << ",\"faces_reoriented\":" << rep.reoriented_triangles
+     << ",\"vertices_duplicated\":" << rep.duplicated_vertices << ",\"faces_skipped\":" << rep.skipped_triangles << "}"
+     << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
+     << ",\"factorization\":" << number(r.timings.factorization_ms)
+     << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms) << "}}\n";
+}
+
+template <typename Mesh>
+void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
+{
+  const Mesh& mesh = input.mesh;
+  int chi = 0;
+  for(const auto& c : r.components) chi += c.euler_characteristic;
+  os << "mesh            " << o.mesh << "\n"
+     << "size            " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces, "
+     << r.components.size() << " component(s), Euler characteristic " << chi << "\n"
+     << "field           degree n = " << r.degree << ", s = " << r.smoothness_parameter << "\n";
+  if(input.report.any())
+    os << "repairs         " << input.report.summary() << "\n";
+  if(main_component(r).alignment_weight > 0. || main_component(r).lambda != 0.)
+    os << "alignment       lambda_t = " << main_component(r).lambda << " (bound lambda_1 = " << main_component(r).eigenvalue
+       << "), alignment weight t = " << main_component(r).alignment_weight << "\n";
+  if(r.mollification > 0.)
+    os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
+  for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
+  {
+    const auto& c = r.components[i];
+    os << "component " << std::setw(4) << i << "  eigenvalue " << c.eigenvalue << ", " << c.iterations
+       << " iterations, residual " << c.residual << (c.converged ? "" : " (not converged)") << ", "
+       << c.number_of_singular_faces << " singular faces, index sum " << c.index_sum << "/" << r.degree << "\n";
+  }
+  if(r.components.size() > 10) os << "...             (" << r.components.size() - 10 << " more components)\n";
+  os << "singularities   " << r.number_of_singular_faces << " faces, index sum " << r.index_sum << "/" << r.degree
+     << " (n * chi = " << r.degree * chi << " on a closed mesh)\n"
+     << "time            " << std::fixed << std::setprecision(1) << r.timings.total_ms << " ms (setup "
+     << r.timings.setup_ms << ", factorization " << r.timings.factorization_ms << ", solve " << r.timings.solve_ms
+     << ")\n";
+}
+
+#endif
