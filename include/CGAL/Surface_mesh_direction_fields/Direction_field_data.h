@@ -239,6 +239,17 @@ Direction_field_data make_direction_field_data(const TriangleMesh& tmesh, Vertex
 
 the same, with the degree `n` taken from the result of the computation
 (`result.degree`), so that it is not passed twice.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam VertexDirectionMap a `ReadablePropertyMap` from vertices to a 3D vector type with `x()`, `y()`, `z()`
+\tparam SingularityRange a range of `std::pair<face_descriptor, int>`, as given by `singularities_output_iterator`
+
+\param tmesh the mesh
+\param direction_map the first direction of each vertex
+\param result what `compute_globally_optimal_directions()` (or `Globally_optimal_direction_field::compute()`) returned
+\param singularities the singular faces and their integers `k`
+\param np optional named parameters, as above
+\returns the field as plain arrays
 */
 template <typename TriangleMesh, typename VertexDirectionMap, typename SingularityRange,
           typename NamedParameters = parameters::Default_named_parameters>

@@ -109,7 +109,7 @@ struct Eigen_solve_result
   // the coarse estimate: its bound of lambda_1 (NaN if none), the solves of
   // the coarsest level, the shift actually used (A + shift M was factored) and
   // whether the shift from the bound was tried and turned out too large
-  double eigenvalue_bound = std::numeric_limits<double>::quiet_NaN();
+  double coarse_upper_bound = std::numeric_limits<double>::quiet_NaN();
   std::size_t coarse_iterations = 0;
   double shift = 0.;
   bool shift_rejected = false;
@@ -466,7 +466,7 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   Coarse_estimate estimate;
   if(n >= options.coarse_threshold)
     estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
-  result.eigenvalue_bound = estimate.bound;
+  result.coarse_upper_bound = estimate.bound;
   result.coarse_iterations = estimate.iterations;
 
   const auto t0 = Clock::now();
