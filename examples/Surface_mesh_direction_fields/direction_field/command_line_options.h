@@ -25,6 +25,8 @@ struct Options
   std::string align = "none", guidance, constrain_boundary = "none";
   bool lambda_given = false, weight_given = false;
   double lambda = 0., weight = 0.5;
+  bool eigenvalue_bound = false;
+  std::string curvature_estimate = "quadric-fit";
 };
 
 // A problem with the input or the options: reported on one line, exit status 1.
@@ -35,7 +37,8 @@ inline const char* const usage =
   "                       [--json] [--json-file FILE] [--png FILE] [--seed N] [--max-iterations N]\n"
   "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
-  "                       [--constrain-boundary tangent|normal]\n"
+  "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
+  "                       [--curvature-estimate quadric-fit|hopf]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
   "                       [--streamlines FILE]\n";
 
@@ -77,6 +80,8 @@ inline Options parse_options(int argc, char** argv, const std::string& default_m
     else if(a == "--lambda") { o.lambda = parse_number<double>(a, value()); o.lambda_given = true; }
     else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, value()); o.weight_given = true; }
     else if(a == "--constrain-boundary") o.constrain_boundary = value();
+    else if(a == "--eigenvalue-bound") o.eigenvalue_bound = true;
+    else if(a == "--curvature-estimate") o.curvature_estimate = value();
     else if(a == "--vtk") o.vtk = value();
     else if(a == "--ply") o.ply = value();
     else if(a == "--rosy") o.rosy = value();
@@ -93,6 +98,8 @@ inline Options parse_options(int argc, char** argv, const std::string& default_m
     throw Usage_error("--align expects none, curvature, min-curvature or max-curvature, got '" + o.align + "'");
   if(o.constrain_boundary != "none" && o.constrain_boundary != "tangent" && o.constrain_boundary != "normal")
     throw Usage_error("--constrain-boundary expects tangent or normal, got '" + o.constrain_boundary + "'");
+  if(o.curvature_estimate != "quadric-fit" && o.curvature_estimate != "hopf")
+    throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
   if(o.lambda_given && o.weight_given)
     throw Usage_error("give either --lambda or --alignment-weight, not both");
   return o;

@@ -30,6 +30,9 @@
 //   --lambda L            the lambda_t of (A - lambda_t M) u = M q (default 0)
 //   --alignment-weight T  or the alignment weight t in (0, 1) to reach
 //   --constrain-boundary  fix one direction tangent (or normal) to the boundary
+//   --curvature-estimate  quadric-fit (default) or hopf (the paper's Hopf differential)
+//   --eigenvalue-bound    also compute lambda_1 for aligned fields (the JSON's
+//                         eigenvalue_bound, null otherwise)
 //   --png FILE            a picture of the field (shaded mesh, directions,
 //                         singular faces in red (+) and blue (-))
 //   The next files describe the repaired mesh (its vertices and triangles),
@@ -150,6 +153,10 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_
                 .residual_tolerance(o.tolerance)
                 .principal_curvature_alignment(curvature)
                 .boundary_alignment(boundary)
+                .compute_eigenvalue_bound(o.eigenvalue_bound)
+                .principal_curvature_estimate(o.curvature_estimate == "hopf"
+                                                ? SMDF::Principal_curvature_estimate::HOPF_DIFFERENTIAL
+                                                : SMDF::Principal_curvature_estimate::QUADRIC_FIT)
                 .vertex_magnitude_map(CGAL::make_property_map(field.magnitudes))
                 .singularities_output_iterator(std::back_inserter(field.singular_faces));
   auto with_guidance = [&](auto np) {

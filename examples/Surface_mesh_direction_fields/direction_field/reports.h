@@ -96,14 +96,20 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   if(input.report.any())
     os << "repairs         " << input.report.summary() << "\n";
   if(main_component(r).alignment_weight > 0. || main_component(r).lambda != 0.)
-    os << "alignment       lambda_t = " << main_component(r).lambda << " (bound lambda_1 = " << main_component(r).eigenvalue
-       << "), alignment weight t = " << main_component(r).alignment_weight << "\n";
+  {
+    os << "alignment       lambda_t = " << main_component(r).lambda;
+    if(!std::isnan(main_component(r).eigenvalue)) os << " (bound lambda_1 = " << main_component(r).eigenvalue << ")";
+    os << ", alignment weight t = " << main_component(r).alignment_weight << "\n";
+  }
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];
-    os << "component " << std::setw(4) << i << "  eigenvalue " << c.eigenvalue << ", " << c.iterations
+    os << "component " << std::setw(4) << i << "  eigenvalue ";
+    if(std::isnan(c.eigenvalue)) os << "not computed";
+    else os << c.eigenvalue;
+    os << ", " << c.iterations
        << " iterations, residual " << c.residual << (c.converged ? "" : " (not converged)") << ", "
        << c.number_of_singular_faces << " singular faces, index sum " << c.index_sum << "/" << r.degree << "\n";
   }

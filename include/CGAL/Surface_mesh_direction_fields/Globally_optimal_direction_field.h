@@ -51,6 +51,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -125,13 +126,20 @@ class Globally_optimal_direction_field
   typedef std::complex<double> Complex;
   typedef std::chrono::steady_clock Clock;
 
-  // A solver and its factorization, for one component's A - sigma M.
+  // A solver and its factorization, for one component's A + shift M: its
+  // symbolic analysis is reused for every later factorization (the pattern
+  // of A + shift M does not depend on n, s or the shift); `aligned_lambda`
+  // is the lambda_t of the aligned system it holds (NaN: it holds another
+  // matrix), so that another guidance field with the same lambda_t costs
+  // one solve.
   struct Component_factorization
   {
     SparseSolver solver;
     internal::Factored_matrix<SparseSolver> factored{solver};
     bool analyzed = false;
+    double aligned_lambda = std::numeric_limits<double>::quiet_NaN();
   };
+  static constexpr bool detects_indefinite = internal::Factored_matrix<SparseSolver>::detects_indefinite;
 
 public:
   /// \name Creation
@@ -380,11 +388,19 @@ private:
     const internal::Constraints constraints = component_constraints(comp, requests.constraints);
     const bool constrained = !constraints.empty();
 
+    // lambda_1: for the smoothest field, and as the bound of lambda_t when the
+    // alignment weight is given (root finding), when it is asked for, or when
+    // the solver cannot tell whether A - lambda_t M is positive definite
+    const bool smoothest = !aligned && !constrained;
+    const bool needs_eigenvalue = smoothest || requests.alignment.eigenvalue_bound ||
+                                  (aligned && (requests.alignment.weight_given || !detects_indefinite));
+    report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
     internal::Complex_vector u;
-    if(!constrained || aligned)  // lambda_1: the smoothest field, or the bound of lambda_t
+    if(needs_eigenvalue)
       u = smallest_eigenvector(c, options, user_solver, report, result.timings);
-    if(aligned || constrained)
-      u = aligned_field(c, q, aligned, constraints, requests.alignment, linear_solver, report);
+    if(!smoothest)
+      u = aligned_field(c, q, aligned, constraints, requests.alignment, options, user_solver, linear_solver, report,
+                        result.timings);
 
     double area = 0.;
     for(std::size_t f : comp.faces) area += m_tangent_spaces.face_area[f];
@@ -399,9 +415,13 @@ private:
   internal::Complex_vector smallest_eigenvector(std::size_t c, internal::Eigen_solve_options options, bool user_solver,
                                                 Component_report& report, Direction_field_timings& timings)
   {
-    internal::Factored_matrix<SparseSolver>& factored = eigen_factorization(c, options, user_solver);
-    internal::Eigen_solve_result eig = internal::smallest_eigenpair(m_matrices[c].energy, m_matrices[c].mass, factored, options);
-    if(!m_keep_factorizations && !user_solver) m_factorizations[c].reset();
+    Component_factorization& kept = component_factorization(c, user_solver);
+    options.same_pattern = kept.analyzed && !user_solver;
+    kept.analyzed = true;
+    kept.aligned_lambda = std::numeric_limits<double>::quiet_NaN();
+    internal::Eigen_solve_result eig =
+      internal::smallest_eigenpair(m_matrices[c].energy, m_matrices[c].mass, kept.factored, options);
+    release_factorization(c, user_solver);
     report.eigenvalue = eig.eigenvalue;
     report.iterations = eig.iterations;
     report.residual = eig.residual;
@@ -411,44 +431,117 @@ private:
   }
 
   // The aligned and/or constrained field of component c: (A - lambda_t M) u = M q
-  // with u fixed on the constrained vertices (manual, "Aligned and Constrained Fields"),
-  // normalized to ||u||_M = 1.
+  // with u fixed on the constrained vertices (manual, "Aligned and Constrained
+  // Fields"), normalized to ||u||_M = 1.
   internal::Complex_vector aligned_field(std::size_t c, const internal::Complex_vector& q, bool aligned,
                                          const internal::Constraints& constraints,
-                                         const internal::Alignment_request& request, SparseSolver& linear_solver,
-                                         Component_report& report) const
+                                         const internal::Alignment_request& request,
+                                         const internal::Eigen_solve_options& options, bool user_solver,
+                                         SparseSolver& linear_solver, Component_report& report,
+                                         Direction_field_timings& timings)
   {
     const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
     const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
     const internal::Complex_vector Mq = M * q;
     const double scale = internal::eigenvalue_scale(A, M);
-    // The default lambda_t is 0, as in the paper, unless lambda_1 is (nearly) 0
-    // (a flat or developable component), where 0 is not admissible.
-    double lambda = request.lambda;
-    if(aligned && !request.lambda_given)
-      lambda = (std::min)(0., report.eigenvalue - 1e-6 * scale);
     internal::Complex_vector u;
-    internal::Factored_matrix<SparseSolver> factored(linear_solver);
+    double lambda = request.lambda;
     if(aligned && request.weight_given)
     {
       std::size_t evaluations = 0;
+      internal::Factored_matrix<SparseSolver> factored(linear_solver);
       lambda = internal::find_lambda_for_weight(A, M, Mq, constraints, report.eigenvalue, request.weight, scale,
                                                 factored, u, evaluations);
       report.iterations += evaluations;
     }
+    else if(aligned && !request.lambda_given)
+      u = solve_with_default_lambda(c, Mq, constraints, options, user_solver, linear_solver, report, timings, lambda);
     else
     {
-      if(aligned && !(lambda < report.eigenvalue))
+      // a lambda_t given (or 0 for a field with constraints only): admissible
+      // when the matrix of the free vertices is positive definite (a solver
+      // that cannot tell is checked against lambda_1 instead)
+      const bool below_bound = detects_indefinite || !aligned || lambda < report.eigenvalue;
+      if(!below_bound ||
+         !solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
+      {
+        if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, options, user_solver, report, timings);
         throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
                                   std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
                                   " (got " + std::to_string(lambda) + ")");
-      u = internal::solve_shifted_system(A, M, lambda, Mq, constraints, factored);
+      }
     }
     report.lambda = lambda;
     report.alignment_weight = aligned ? internal::alignment_weight_of(M, u) : 0.;
     const double u_norm = internal::m_norm(M, u);
     if(u_norm > 0.) u /= u_norm;
     return u;
+  }
+
+  // The aligned field with the default lambda_t: 0, as in the paper, in one
+  // factorization and one solve; unless lambda_1 is (nearly) 0 (a flat or
+  // developable component), where 0 is not admissible: then, as when lambda_1
+  // is known, lambda_t = min(0, lambda_1 - 1e-6 s_A). Near-zero lambda_1 shows
+  // as a failed factorization or as a solution whose Rayleigh quotient is
+  // tiny (it is then dominated by the eigenvector of lambda_1).
+  internal::Complex_vector solve_with_default_lambda(std::size_t c, const internal::Complex_vector& Mq,
+                                                     const internal::Constraints& constraints,
+                                                     const internal::Eigen_solve_options& options, bool user_solver,
+                                                     SparseSolver& linear_solver, Component_report& report,
+                                                     Direction_field_timings& timings, double& lambda)
+  {
+    const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
+    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    const double scale = internal::eigenvalue_scale(A, M);
+    internal::Complex_vector u;
+    if(std::isnan(report.eigenvalue))
+    {
+      lambda = 0.;
+      if(solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
+      {
+        const double rayleigh_quotient = u.dot(A * u).real() / u.dot(M * u).real();
+        if(rayleigh_quotient >= 1e-10 * scale) return u;
+      }
+      smallest_eigenvector(c, options, user_solver, report, timings);
+    }
+    lambda = (std::min)(0., report.eigenvalue - 1e-6 * scale);
+    if(!solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
+      throw Solver_failure_error("the sparse solver could not factor A - lambda_t M of component " + std::to_string(c));
+    return u;
+  }
+
+  // u with (A - lambda M) u = Mq on the free vertices of component c, u = c on
+  // the constrained ones; false if that matrix is not positive definite (as
+  // far as the solver tells). Without constraints the component's kept
+  // factorization is used, and not redone for the lambda it already holds.
+  bool solve_below_smallest_eigenvalue(std::size_t c, double lambda, const internal::Complex_vector& Mq,
+                                       const internal::Constraints& constraints, bool user_solver,
+                                       SparseSolver& linear_solver, Direction_field_timings& timings,
+                                       internal::Complex_vector& u)
+  {
+    const internal::Shifted_system system(m_matrices[c].energy, m_matrices[c].mass, lambda, constraints);
+    const auto start = Clock::now();
+    if(!constraints.empty())
+    {
+      // the matrix of the free vertices has a pattern of its own: a solver of its own
+      internal::Factored_matrix<SparseSolver> factored(linear_solver);
+      const bool factored_ok = system.factor(factored, false, detects_indefinite);
+      timings.factorization_ms += milliseconds_since(start);
+      if(factored_ok) u = system.solve(factored, Mq);
+      return factored_ok;
+    }
+    Component_factorization& kept = component_factorization(c, user_solver);
+    if(!(kept.aligned_lambda == lambda))
+    {
+      const bool factored_ok = system.factor(kept.factored, kept.analyzed && !user_solver, detects_indefinite);
+      kept.analyzed = true;
+      kept.aligned_lambda = factored_ok ? lambda : std::numeric_limits<double>::quiet_NaN();
+      timings.factorization_ms += milliseconds_since(start);
+      if(!factored_ok) return false;
+    }
+    u = system.solve(kept.factored, Mq);
+    release_factorization(c, user_solver);
+    return true;
   }
 
   // The faces of non-zero index, to `out`, and the index sums (manual, "Singularities").
@@ -510,29 +603,30 @@ private:
     {
       m_matrices.clear();  // free the old matrices before building the new ones
       m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
+      for(auto& kept : m_factorizations)  // they factor the old matrices
+        if(kept) kept->aligned_lambda = std::numeric_limits<double>::quiet_NaN();
       m_has_matrices = true;
       m_degree = degree;
       m_s = s;
     }
   }
 
-  // The factorization of component c's A - sigma M: the user's solver, or
+  // The factorization of component c: the user's solver (this call only), or
   // the component's own one, whose symbolic analysis is reused.
-  internal::Factored_matrix<SparseSolver>&
-  eigen_factorization(std::size_t c, internal::Eigen_solve_options& options, bool user_solver)
+  Component_factorization& component_factorization(std::size_t c, bool user_solver)
   {
-    if(user_solver)
-    {
-      options.same_pattern = false;
-      return m_user_solver->factored;
-    }
+    if(user_solver) return *m_user_solver;
     if(m_factorizations.size() != m_components.list.size())
       m_factorizations.resize(m_components.list.size());
     if(!m_factorizations[c])
       m_factorizations[c] = std::make_unique<Component_factorization>();
-    options.same_pattern = m_factorizations[c]->analyzed;
-    m_factorizations[c]->analyzed = true;
-    return m_factorizations[c]->factored;
+    return *m_factorizations[c];
+  }
+
+  // Frees component c's factorization unless factorizations are kept.
+  void release_factorization(std::size_t c, bool user_solver)
+  {
+    if(!m_keep_factorizations && !user_solver) m_factorizations[c].reset();
   }
 
   GeomTraits m_traits;

@@ -21,17 +21,36 @@ namespace Surface_mesh_direction_fields {
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
 Which principal curvature direction guides the field (named parameter
-`principal_curvature_alignment`). The guidance is the discrete Hopf
-differential: a line field along the maximum curvature direction, weighted by
-the difference of the principal curvatures (it vanishes at umbilics). For a
-degree `n`, its `n/2`-th power is used, so `n` must be even; for `n = 4` the two
-values give the same cross (both directions at once).
+`principal_curvature_alignment`). The guidance is a line field along the
+maximum curvature direction, weighted by the difference of the principal
+curvatures (it vanishes at umbilics), estimated as
+`principal_curvature_estimate` says. For a degree `n`, its `n/2`-th power is
+used, so `n` must be even; for `n = 4` the two values give the same cross
+(both directions at once).
 */
 enum class Principal_curvature_alignment
 {
   NONE,     ///< no curvature guidance
   MAXIMUM,  ///< along the direction of maximum curvature
   MINIMUM   ///< along the direction of minimum curvature
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+How the principal curvature directions are estimated (named parameter
+`principal_curvature_estimate`), see the user manual, section "Aligned and
+Constrained Fields".
+*/
+enum class Principal_curvature_estimate
+{
+  /// at each vertex, a least-squares quadric fitted to its two-ring: close to
+  /// the surface's own directions on irregular triangulations (the default)
+  QUADRIC_FIT,
+  /// the discrete Hopf differential of the paper, from the dihedral angles of
+  /// the edges, projected onto the vertices with the mass matrix: exact in the
+  /// integral sense, but noisy at each vertex of an irregular triangulation
+  HOPF_DIFFERENTIAL
 };
 
 /*!

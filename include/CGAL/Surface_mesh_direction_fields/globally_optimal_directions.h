@@ -80,13 +80,22 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{principal_curvature_alignment}
-    \cgalParamDescription{aligns the field with the principal curvature directions: the guidance `q` is the discrete
-                          Hopf differential (a line field along the maximum curvature direction, whose magnitude is
-                          the difference of the principal curvatures, so that umbilic regions are left to smoothness),
-                          raised to the power `n/2`; `MINIMUM` takes the orthogonal line field. For `n = 4` both
-                          values give the same crosses. Requires an even `n`.}
+    \cgalParamDescription{aligns the field with the principal curvature directions: the guidance `q` is a line field
+                          along the maximum curvature direction whose magnitude is the difference of the principal
+                          curvatures (so that umbilic regions are left to smoothness), raised to the power `n/2`;
+                          `MINIMUM` takes the orthogonal line field. For `n = 4` both values give the same crosses.
+                          Requires an even `n`.}
     \cgalParamType{`CGAL::Surface_mesh_direction_fields::Principal_curvature_alignment`}
     \cgalParamDefault{`Principal_curvature_alignment::NONE`}
+  \cgalParamNEnd
+  \cgalParamNBegin{principal_curvature_estimate}
+    \cgalParamDescription{how the principal curvature line field is estimated: a least-squares cubic fitted at each
+                          vertex to its two-ring (`QUADRIC_FIT`: stays close to the surface's own directions on
+                          irregular triangulations), or the paper's discrete Hopf differential from the dihedral angles
+                          of the edges (`HOPF_DIFFERENTIAL`: noisy vertex by vertex on irregular triangulations, which
+                          strong alignment turns into spurious singularities).}
+    \cgalParamType{`CGAL::Surface_mesh_direction_fields::Principal_curvature_estimate`}
+    \cgalParamDefault{`Principal_curvature_estimate::QUADRIC_FIT`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_guidance_map}
     \cgalParamDescription{a guidance vector per vertex, projected to the tangent plane; its length is its weight and
@@ -104,7 +113,9 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                           the value used for \f$ (A - \lambda_t M)_{FF} \f$.}
     \cgalParamType{`double`}
     \cgalParamDefault{`0`, as in the paper (or just below \f$ \lambda_1 \f$ if \f$ \lambda_1 \f$ is about 0, as on
-                      flat and developable surfaces)}
+                      flat and developable surfaces). A given \f$ \lambda_t \f$ costs one factorization of
+                      \f$ A - \lambda_t M \f$ and one solve: its success certifies \f$ \lambda_t < \lambda_1 \f$,
+                      and \f$ \lambda_1 \f$ itself is computed only when needed (see `compute_eigenvalue_bound`).}
   \cgalParamNEnd
   \cgalParamNBegin{alignment_weight}
     \cgalParamDescription{instead of \f$ \lambda_t \f$: the alignment weight \f$ t = 1/(1 + \|u\|_M) \in (0, 1) \f$ to
@@ -112,6 +123,14 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                           root finding (each step is one factorization), per component.}
     \cgalParamType{`double` in \f$ (0, 1) \f$}
     \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{compute_eigenvalue_bound}
+    \cgalParamDescription{whether the smallest eigenvalue \f$ \lambda_1 \f$ (the upper bound of \f$ \lambda_t \f$) is
+                          computed for aligned and constrained fields too, where the field itself needs it only with
+                          `alignment_weight` (or with a solver that cannot tell whether a matrix is positive definite).
+                          When it is not computed, `Component_report::eigenvalue` is NaN.}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false` (the smoothest field always computes it)}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_is_constrained_map}
     \cgalParamDescription{the vertices whose direction is prescribed by `vertex_constrained_direction_map` (hard

@@ -49,57 +49,122 @@ struct Constraints
   }
 };
 
-// `same_pattern`: the system has the sparsity pattern of the previous call
-// with the same `factored` (e.g. another lambda), so the symbolic analysis is reused.
+// The system (A - lambda M) u = b with u = c on the constrained vertices:
+// factored once (a Cholesky factorization whose success certifies that the
+// matrix of the free vertices is positive definite, which lambda < lambda_1
+// ensures), then solved for any number of right-hand sides b.
+class Shifted_system
+{
+  const Complex_sparse_matrix& m_A;
+  const Complex_sparse_matrix& m_M;
+  const double m_lambda;
+  const Constraints& m_constraints;
+  const bool m_constrained;
+  std::vector<Eigen::Index> m_free_index;  // per vertex: its row among the free ones, -1 if constrained
+  Eigen::Index m_free = 0;
+  Complex_sparse_matrix m_K;  // A - lambda M, when there are constraints
+
+public:
+  Shifted_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
+                 const Constraints& constraints)
+    : m_A(A), m_M(M), m_lambda(lambda), m_constraints(constraints), m_constrained(!constraints.empty())
+  {
+    if(!m_constrained) return;
+    const Eigen::Index n = A.rows();
+    m_free_index.assign(static_cast<std::size_t>(n), -1);
+    for(Eigen::Index i = 0; i < n; ++i)
+      if(!constraints.is_constrained[static_cast<std::size_t>(i)])
+        m_free_index[static_cast<std::size_t>(i)] = m_free++;
+    m_K = A - lambda * M;
+  }
+
+  // Factors the matrix of the free vertices. With `check`, returns false when
+  // the solver finds it is not positive definite (a solver that cannot tell,
+  // see Factored_matrix::detects_indefinite, throws if it cannot factor);
+  // `same_pattern`: `factored` last factored a matrix of the same pattern
+  // (another lambda), so its symbolic analysis is reused.
+  template <typename SparseSolver>
+  bool factor(Factored_matrix<SparseSolver>& factored, bool same_pattern, bool check) const
+  {
+    if(!m_constrained)
+    {
+      if(check) return factored.factor_shifted_if_positive_definite(m_A, m_M, -m_lambda, same_pattern);
+      factored.factor_shifted(m_A, m_M, -m_lambda, same_pattern);
+      return true;
+    }
+    if(m_free == 0) return true;
+    const Complex_sparse_matrix K_ff = free_block();
+    if(check) return factored.factor_if_positive_definite(K_ff, same_pattern);
+    factored.factor(K_ff, same_pattern);
+    return true;
+  }
+
+  // u with (A - lambda M) u = b on the free vertices, u = c on the others.
+  template <typename SparseSolver>
+  Complex_vector solve(const Factored_matrix<SparseSolver>& factored, const Complex_vector& b) const
+  {
+    if(!m_constrained) return factored.solve(b);
+    const Eigen::Index n = m_A.rows();
+    Complex_vector u(n);
+    for(Eigen::Index i = 0; i < n; ++i)
+      u[i] = m_free_index[static_cast<std::size_t>(i)] < 0 ? m_constraints.values[i] : Complex(0., 0.);
+    if(m_free == 0) return u;
+    const Complex_vector x = factored.solve(free_right_hand_side(b, u));
+    for(Eigen::Index i = 0; i < n; ++i)
+      if(m_free_index[static_cast<std::size_t>(i)] >= 0) u[i] = x[m_free_index[static_cast<std::size_t>(i)]];
+    return u;
+  }
+
+private:
+  // K_FF, written column by column (rows stay sorted)
+  Complex_sparse_matrix free_block() const
+  {
+    Complex_sparse_matrix K_ff(m_free, m_free);
+    K_ff.reserve(m_K.nonZeros());
+    for(Eigen::Index col = 0; col < m_K.outerSize(); ++col)
+    {
+      const Eigen::Index c = m_free_index[static_cast<std::size_t>(col)];
+      if(c < 0) continue;
+      K_ff.startVec(c);
+      for(Complex_sparse_matrix::InnerIterator it(m_K, col); it; ++it)
+      {
+        const Eigen::Index r = m_free_index[static_cast<std::size_t>(it.row())];
+        if(r >= 0) K_ff.insertBack(r, c) = it.value();
+      }
+    }
+    K_ff.finalize();
+    return K_ff;
+  }
+
+  // b_F - K_FC c, with c the constrained values of u
+  Complex_vector free_right_hand_side(const Complex_vector& b, const Complex_vector& u) const
+  {
+    Complex_vector rhs(m_free);
+    for(std::size_t i = 0; i < m_free_index.size(); ++i)
+      if(m_free_index[i] >= 0) rhs[m_free_index[i]] = b[static_cast<Eigen::Index>(i)];
+    for(Eigen::Index col = 0; col < m_K.outerSize(); ++col)
+    {
+      if(m_free_index[static_cast<std::size_t>(col)] >= 0) continue;
+      for(Complex_sparse_matrix::InnerIterator it(m_K, col); it; ++it)
+      {
+        const Eigen::Index r = m_free_index[static_cast<std::size_t>(it.row())];
+        if(r >= 0) rhs[r] -= it.value() * u[col];
+      }
+    }
+    return rhs;
+  }
+};
+
+// Factors and solves (A - lambda M) u = Mq with the constraints (see
+// Shifted_system; throws if the matrix cannot be factored).
 template <typename SparseSolver>
 Complex_vector solve_shifted_system(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double lambda,
                                     const Complex_vector& Mq, const Constraints& constraints,
                                     Factored_matrix<SparseSolver>& factored, bool same_pattern = false)
 {
-  const Eigen::Index n = A.rows();
-  if(constraints.empty())
-  {
-    factored.factor_shifted(A, M, -lambda, same_pattern);
-    return factored.solve(Mq);
-  }
-
-  std::vector<Eigen::Index> free_index(static_cast<std::size_t>(n), -1);
-  Eigen::Index nf = 0;
-  for(Eigen::Index i = 0; i < n; ++i)
-    if(!constraints.is_constrained[static_cast<std::size_t>(i)])
-      free_index[static_cast<std::size_t>(i)] = nf++;
-
-  Complex_vector u(n);
-  for(Eigen::Index i = 0; i < n; ++i)
-    u[i] = free_index[static_cast<std::size_t>(i)] < 0 ? constraints.values[i] : Complex(0., 0.);
-  if(nf == 0) return u;
-
-  // K_FF, written column by column (rows stay sorted), and the right-hand side
-  // (M q)_F - K_FC c
-  const Complex_sparse_matrix K = A - lambda * M;
-  Complex_sparse_matrix K_ff(nf, nf);
-  K_ff.reserve(K.nonZeros());
-  Complex_vector rhs(nf);
-  for(Eigen::Index i = 0; i < n; ++i)
-    if(free_index[static_cast<std::size_t>(i)] >= 0) rhs[free_index[static_cast<std::size_t>(i)]] = Mq[i];
-  for(Eigen::Index col = 0; col < K.outerSize(); ++col)
-  {
-    const Eigen::Index c = free_index[static_cast<std::size_t>(col)];
-    if(c >= 0) K_ff.startVec(c);
-    for(Complex_sparse_matrix::InnerIterator it(K, col); it; ++it)
-    {
-      const Eigen::Index r = free_index[static_cast<std::size_t>(it.row())];
-      if(r < 0) continue;
-      if(c >= 0) K_ff.insertBack(r, c) = it.value();
-      else rhs[r] -= it.value() * u[col];
-    }
-  }
-  K_ff.finalize();
-  factored.factor(K_ff, same_pattern);
-  const Complex_vector x = factored.solve(rhs);
-  for(Eigen::Index i = 0; i < n; ++i)
-    if(free_index[static_cast<std::size_t>(i)] >= 0) u[i] = x[free_index[static_cast<std::size_t>(i)]];
-  return u;
+  const Shifted_system system(A, M, lambda, constraints);
+  system.factor(factored, same_pattern, false);
+  return system.solve(factored, Mq);
 }
 
 inline double alignment_weight_of(const Complex_sparse_matrix& M, const Complex_vector& u)

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/principal_curvatures.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
@@ -95,7 +96,11 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
   {
     if(degree % 2 != 0)
       throw Invalid_input_error("curvature alignment needs an even degree n (got " + std::to_string(degree) + ")");
-    const std::vector<Complex> line = curvature_line_field(mesh, ts, components, solver);
+    const Principal_curvature_estimate estimate = choose_parameter(
+      get_parameter(np, internal_np::principal_curvature_estimate), Principal_curvature_estimate::QUADRIC_FIT);
+    const std::vector<Complex> line = estimate == Principal_curvature_estimate::HOPF_DIFFERENTIAL
+                                        ? curvature_line_field(mesh, ts, components, solver)
+                                        : quadric_fit_line_field(mesh, ts, normals);
     q.assign(mesh.number_of_vertices(), Complex(0., 0.));
     for(const Component& comp : components.list)
       for(std::size_t v : comp.vertices)
@@ -126,6 +131,7 @@ struct Alignment_request
 {
   bool lambda_given = false, weight_given = false;
   double lambda = 0., weight = 0.5;
+  bool eigenvalue_bound = false;  // lambda_1 asked for, also where the field does not need it
 };
 
 template <typename NamedParameters>
@@ -139,6 +145,7 @@ Alignment_request alignment_request(const NamedParameters& np, bool has_guidance
   r.weight_given = !is_default_parameter<NamedParameters, internal_np::alignment_weight_t>::value;
   r.lambda = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
   r.weight = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
+  r.eigenvalue_bound = choose_parameter(get_parameter(np, internal_np::compute_eigenvalue_bound), false);
   if(r.lambda_given && r.weight_given)
     throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
   if(r.lambda_given && !std::isfinite(r.lambda))
