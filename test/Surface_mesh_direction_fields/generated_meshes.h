@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,48 @@ void make_icosphere(Mesh& mesh, int subdivisions, double radius = 1.)
   std::vector<typename Mesh::Vertex_index> vs;
   for(auto& p : pts) vs.push_back(mesh.add_vertex(Point(radius * p[0], radius * p[1], radius * p[2])));
   for(auto& f : tris) mesh.add_face(vs[f[0]], vs[f[1]], vs[f[2]]);
+}
+
+// The triaxial ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 from an icosphere,
+// every vertex then moved along the tangent plane by `jitter` times the mean
+// edge length (times a random factor in [0.5, 1], in a random direction) and
+// projected back onto the ellipsoid: the same surface, irregularly
+// triangulated. The random numbers are the raw output of a seeded 64-bit
+// Mersenne twister (specified by the standard): the same mesh everywhere.
+template <typename Mesh>
+void make_jittered_ellipsoid(Mesh& mesh, int subdivisions, double a, double b, double c, double jitter,
+                             unsigned int seed)
+{
+  typedef typename Mesh::Point Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  make_icosphere(mesh, subdivisions);
+  for(auto v : mesh.vertices())
+  {
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(a * p.x(), b * p.y(), c * p.z());
+  }
+  double edge = 0.;
+  for(auto e : mesh.edges())
+    edge += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))), mesh.point(mesh.target(mesh.halfedge(e)))));
+  edge /= static_cast<double>(mesh.number_of_edges());
+  std::mt19937_64 engine(seed);
+  auto uniform = [&engine]() { return static_cast<double>(engine() >> 11) * 0x1.0p-53; };  // [0, 1)
+  for(auto v : mesh.vertices())
+  {
+    const Point p = mesh.point(v);
+    Vector n(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
+    n = n / std::sqrt(n.squared_length());
+    Vector r;
+    do
+    {
+      r = Vector(2. * uniform() - 1., 2. * uniform() - 1., 2. * uniform() - 1.);
+      r = r - (r * n) * n;
+    } while(!(r.squared_length() > 1e-6 && r.squared_length() <= 1.));
+    r = r * ((0.5 + 0.5 * uniform()) * jitter * edge / std::sqrt(r.squared_length()));
+    const Point q = p + r;
+    const double scale = std::sqrt(q.x() * q.x() / (a * a) + q.y() * q.y() / (b * b) + q.z() * q.z() / (c * c));
+    mesh.point(v) = Point(q.x() / scale, q.y() / scale, q.z() / scale);
+  }
 }
 
 // A sphere with bumps: no symmetry, so that its smallest eigenvalue is simple.
