@@ -6,9 +6,15 @@
 // analysis).
 //
 //   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R] [--no-huge-pages]
-//                                     [--backend default|ldlt|both] [--subdivide K] [--csv FILE] [MESH...]
+//                                     [--backend default|ldlt|both] [--subdivide K] [--csv FILE]
+//                                     [--align curvature [--lambda L]] [MESH...]
 // A mesh given as FILE@K is FILE after K steps of Loop subdivision (4^K times the faces).
 // With no mesh: every mesh of ../shared/data/meshes, then nefertiti_sub4.off@1 (1.6 million faces).
+//
+// --align curvature: the curvature-aligned field ((A - lambda_t M) u = M q,
+// lambda_t = L or the default 0) instead of the smoothest one; "again" is then
+// the other principal direction with the same lambda_t on the class (the kept
+// factorization: no factorization of its own).
 //
 // Peak memory: the kernel's high-water mark of the resident set (VmHWM), reset
 // before each run (writing 5 to /proc/self/clear_refs), so it is the peak of
@@ -74,6 +80,28 @@ static void reset_peak_memory()
   clear << "5";  // Linux >= 4.0: reset the peak RSS to the current RSS
 }
 
+// What is computed: the smoothest field, or the curvature-aligned one.
+struct Field_request
+{
+  int degree = 4;
+  double s = 0.;
+  bool aligned = false, lambda_given = false;
+  double lambda = 0.;
+};
+
+template <typename Solver>
+SMDF::Direction_field_result compute(const Mesh& mesh, std::vector<Kernel::Vector_3>& directions,
+                                     const Field_request& f,
+                                     SMDF::Principal_curvature_alignment which = SMDF::Principal_curvature_alignment::MAXIMUM)
+{
+  auto dir = CGAL::make_property_map(directions);
+  auto np = CGAL::parameters::degree(f.degree).smoothness_parameter(f.s).sparse_linear_solver(Solver());
+  if(!f.aligned) return SMDF::compute_globally_optimal_directions(mesh, dir, np);
+  if(!f.lambda_given)
+    return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which));
+  return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which).alignment_lambda(f.lambda));
+}
+
 struct Run
 {
   std::string mesh, backend;
@@ -114,8 +142,10 @@ double reference_ms(const Mesh& mesh, int degree, double s)
 }
 
 template <typename Solver>
-Run run(const Mesh& mesh, const std::string& name, const std::string& backend, int degree, double s, int repeat)
+Run run(const Mesh& mesh, const std::string& name, const std::string& backend, const Field_request& f, int repeat)
 {
+  const int degree = f.degree;
+  const double s = f.s;
   Run r;
   r.mesh = name;
   r.backend = backend;
@@ -127,8 +157,7 @@ Run run(const Mesh& mesh, const std::string& name, const std::string& backend, i
   {
     reset_peak_memory();
     const double before = proc_status_mb("VmRSS:");
-    SMDF::Direction_field_result res = SMDF::compute_globally_optimal_directions(
-      mesh, dir, CGAL::parameters::degree(degree).smoothness_parameter(s).sparse_linear_solver(Solver()));
+    SMDF::Direction_field_result res = compute<Solver>(mesh, directions, f);
     const double peak = proc_status_mb("VmHWM:");
     if(k == 0 || res.timings.total_ms < r.result.timings.total_ms) { r.result = res; r.peak_mb = peak; r.before_mb = before; }
   }
@@ -137,18 +166,30 @@ Run run(const Mesh& mesh, const std::string& name, const std::string& backend, i
     const double ms = reference_ms<Solver>(mesh, degree, s);
     if(k == 0 || ms < r.reference_ms) r.reference_ms = ms;
   }
-  // The class for repeated work: a second field (another s) on the same mesh.
+  // The class for repeated work: a second field on the same mesh (another s;
+  // or, aligned, the other principal direction with the same lambda_t).
   SMDF::Globally_optimal_direction_field<Mesh, Kernel, Solver> field(mesh);
-  field.compute(dir, CGAL::parameters::degree(degree).smoothness_parameter(s));
-  r.again_ms = field.compute(dir, CGAL::parameters::degree(degree).smoothness_parameter(s == 0. ? 0.5 : 0.))
-                 .timings.total_ms;
+  auto np = CGAL::parameters::degree(degree).smoothness_parameter(s);
+  if(!f.aligned)
+  {
+    field.compute(dir, np);
+    r.again_ms = field.compute(dir, CGAL::parameters::degree(degree).smoothness_parameter(s == 0. ? 0.5 : 0.))
+                   .timings.total_ms;
+    return r;
+  }
+  const double lambda = f.lambda_given ? f.lambda : 0.;
+  field.compute(dir, np.principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM).alignment_lambda(lambda));
+  r.again_ms = field.compute(dir, np.principal_curvature_alignment(SMDF::Principal_curvature_alignment::MINIMUM)
+                                    .alignment_lambda(lambda)).timings.total_ms;
   return r;
 }
 
 int main(int argc, char** argv)
 {
-  int degree = 4, repeat = 1;
-  double s = 0.;
+  int repeat = 1;
+  Field_request request;
+  int& degree = request.degree;
+  double& s = request.s;
   std::string backend = "default", csv_file;
   bool huge_pages = true;
   std::vector<std::string> meshes;
@@ -161,6 +202,8 @@ int main(int argc, char** argv)
     else if(a == "--backend" && i + 1 < argc) backend = argv[++i];
     else if(a == "--csv" && i + 1 < argc) csv_file = argv[++i];
     else if(a == "--no-huge-pages") huge_pages = false;
+    else if(a == "--align" && i + 1 < argc) request.aligned = std::string(argv[++i]) == "curvature";
+    else if(a == "--lambda" && i + 1 < argc) { request.lambda = std::stod(argv[++i]); request.lambda_given = true; }
     else if(a == "--help") { std::cout << "see the comment at the top of benchmark_direction_fields.cpp\n"; return 0; }
     else meshes.push_back(a);
   }
@@ -208,9 +251,9 @@ int main(int argc, char** argv)
 
     std::vector<Run> rows;
     if(backend == "default" || backend == "both")
-      rows.push_back(run<SMDF::Default_direction_field_solver>(mesh, name, default_name, degree, s, repeat));
+      rows.push_back(run<SMDF::Default_direction_field_solver>(mesh, name, default_name, request, repeat));
     if(backend == "ldlt" || (backend == "both" && default_name != "ldlt"))
-      rows.push_back(run<Ldlt_solver>(mesh, name, "ldlt", degree, s, repeat));
+      rows.push_back(run<Ldlt_solver>(mesh, name, "ldlt", request, repeat));
     for(const Run& r : rows)
     {
       const SMDF::Direction_field_result& b = r.result;
@@ -229,7 +272,7 @@ int main(int argc, char** argv)
   std::ostringstream csv;
   csv << "mesh,vertices,faces,components,degree,s,backend,eigenvalue,singular_faces,index_sum,iterations,residual,"
          "setup_ms,factorization_ms,solve_ms,total_ms,reference_ms,total_over_reference,again_ms,peak_memory_mb,peak_kb_per_vertex,"
-         "computation_kb_per_vertex\n";
+         "computation_kb_per_vertex,field\n";
   for(const Run& r : runs)
   {
     const SMDF::Direction_field_result& b = r.result;
@@ -240,7 +283,8 @@ int main(int argc, char** argv)
         << b.timings.total_ms << "," << r.reference_ms << "," << b.timings.total_ms / r.reference_ms << ","
         << r.again_ms << "," << r.peak_mb << ","
         << 1024. * r.peak_mb / static_cast<double>(r.vertices) << ","
-        << 1024. * (r.peak_mb - r.before_mb) / static_cast<double>(r.vertices) << "\n";
+        << 1024. * (r.peak_mb - r.before_mb) / static_cast<double>(r.vertices) << ","
+        << (request.aligned ? "curvature_aligned" : "smoothest") << "\n";
   }
   std::cout << "\n" << csv.str();
   if(!csv_file.empty()) std::ofstream(csv_file) << csv.str();

@@ -89,7 +89,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`Principal_curvature_alignment::NONE`}
   \cgalParamNEnd
   \cgalParamNBegin{principal_curvature_estimate}
-    \cgalParamDescription{how the principal curvature line field is estimated: a least-squares cubic fitted at each
+    \cgalParamDescription{how the principal curvature line field is estimated: a least-squares quadric fitted at each
                           vertex to its two-ring (`QUADRIC_FIT`: stays close to the surface's own directions on
                           irregular triangulations), or the paper's discrete Hopf differential from the dihedral angles
                           of the edges (`HOPF_DIFFERENTIAL`: noisy vertex by vertex on irregular triangulations, which

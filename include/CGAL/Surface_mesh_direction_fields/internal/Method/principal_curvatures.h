@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <vector>
 
 // The principal-curvature line field from a local quadric fit (user manual,
@@ -58,23 +59,34 @@ inline Vec3 area_weighted_normal(const Indexed_mesh& m, std::size_t v)
   return normalized(sum);
 }
 
-// The second-order part of the height function over the tangent plane,
-// a x^2 + b x y + c y^2 + d x + e y + f: what the shape operator needs.
+// The height function over the tangent plane, a x^2 + b x y + c y^2 + d x +
+// e y + f.
 typedef Eigen::Matrix<double, 6, 1> Jet;
 
-// The vertices of the two-ring of v (v excluded, each once), into `ring`
-// (a few dozen: a linear search finds the ones already taken).
-inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size_t>& ring)
+// The most points a fit uses (a two-ring has about 18; a vertex of very high
+// valence keeps the nearest ones: the one-ring comes first).
+constexpr int max_fit_points = 64;
+
+// The vertices of the two-ring of v (v excluded, each once), into `ring`.
+// `taken` has an entry per vertex (kept by the caller from one vertex to the
+// next): a vertex is taken for v when its entry is `stamp`, a value that no
+// other call gives (see Ring_marks).
+inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size_t>& ring,
+                     std::vector<std::uint64_t>& taken, std::uint64_t stamp)
 {
   ring.clear();
+  taken[v] = stamp;
   auto add_neighbours = [&](std::size_t w) {
     for(std::size_t corner : m.fan(w))
     {
       const auto& t = m.faces[corner / 3];
       const int c = static_cast<int>(corner % 3);
       for(std::size_t u : {std::size_t(t[(c + 1) % 3]), std::size_t(t[(c + 2) % 3])})
-        if(u != v && std::find(ring.begin(), ring.end(), u) == ring.end())
+        if(taken[u] != stamp)
+        {
+          taken[u] = stamp;
           ring.push_back(u);
+        }
     }
   };
   add_neighbours(v);
@@ -86,76 +98,86 @@ inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size
 // is the graph z = h(x, y) over an orthonormal frame (x_axis, y_axis,
 // normal), with h = a x^2 + b x y + c y^2 + d x + e y + f fitted by least
 // squares; its length is k_max - k_min (zero where the fit is degenerate).
-inline Vec3 maximum_curvature_vector(const Jet& h, const Vec3& x_axis, const Vec3& y_axis,
-                                     const Vec3& normal)
+inline Vec3 maximum_curvature_vector(const Jet& h, const Vec3& x_axis, const Vec3& y_axis, const Vec3& normal)
 {
   const double a = h[0], b = h[1], c = h[2], d = h[3], e = h[4];
-  // first and second fundamental forms of the graph at (0, 0)
-  Eigen::Matrix2d first, second;
-  first << 1. + d * d, d * e, d * e, 1. + e * e;
+  // first (E, F, G) and second (L, N, P) fundamental forms of the graph at (0, 0)
+  const double E = 1. + d * d, F = d * e, G = 1. + e * e;
   const double w = std::sqrt(1. + d * d + e * e);
-  second << 2. * a / w, b / w, b / w, 2. * c / w;
-  // the shape operator first^{-1} second is self-adjoint for `first`: solve
-  // the generalized symmetric problem second x = k first x
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(second, first);
-  if(solver.info() != Eigen::Success) return Vec3{0., 0., 0.};
-  // Curvatures are positive where the surface bends away from its normal (a
-  // convex edge has a positive dihedral angle, as for the Hopf differential):
-  // the negated eigenvalues, so the maximum belongs to the smallest one.
-  const double k_max = -solver.eigenvalues()[0], k_min = -solver.eigenvalues()[1];
-  const Eigen::Vector2d p = solver.eigenvectors().col(0);
-  // the parameter direction p lifted onto the graph's tangent plane
-  const Vec3 direction = p[0] * x_axis + p[1] * y_axis + (d * p[0] + e * p[1]) * normal;
-  return (k_max - k_min) * normalized(direction);
+  const double L = 2. * a / w, N = b / w, P = 2. * c / w;
+  // The principal curvatures solve det(second - k first) = 0. Curvatures are
+  // positive where the surface bends away from its normal (a convex edge has
+  // a positive dihedral angle, as for the Hopf differential): k = -root, so
+  // the maximum curvature belongs to the smaller root.
+  const double quadratic = E * G - F * F, linear = L * G + P * E - 2. * N * F, constant = L * P - N * N;
+  const double discriminant = std::sqrt((std::max)(0., linear * linear - 4. * quadratic * constant));
+  const double root = (linear - discriminant) / (2. * quadratic);
+  // its direction (x, y) in the kernel of second - root first: the longer of
+  // the two rows turned by a right angle
+  const double r11 = L - root * E, r12 = N - root * F, r22 = P - root * G;
+  double x = r12, y = -r11;
+  if(r22 * r22 + r12 * r12 > r11 * r11 + r12 * r12) { x = r22; y = -r12; }
+  const Vec3 direction = x * x_axis + y * y_axis + (d * x + e * y) * normal;  // lifted onto the graph's tangent plane
+  const double length = norm(direction);
+  if(!(length > 0.) || !std::isfinite(discriminant)) return Vec3{0., 0., 0.};
+  return (discriminant / quadratic / length) * direction;  // k_max - k_min = discriminant / quadratic
 }
 
-// The least-squares fit, by a polynomial of degree 3 (Terms = 10) or 2
-// (Terms = 6), of the heights of `points` over the plane through `origin`
-// with the frame (x_axis, y_axis, normal); false if the points do not
-// determine it well: a two-ring stretched along one direction leaves the
-// cubic terms nearly free, and their values then swamp the curvature.
-template <int Terms>
-bool fit_height_function(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
-                         const Vec3& normal, double conditioning, Jet& h)
+// The least-squares quadric h over the plane through `origin` with the frame
+// (x_axis, y_axis, normal) fitted to the heights of `points`; false if the
+// points do not determine it well (all of them nearly on one line).
+inline bool fit_quadric(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                        const Vec3& normal, Jet& h)
 {
-  typedef Eigen::Matrix<double, Terms, 1> Row;
-  if(points.size() < std::size_t(Terms)) return false;
-  Eigen::Matrix<double, Terms, Terms> normal_matrix = Eigen::Matrix<double, Terms, Terms>::Zero();
-  Row rhs = Row::Zero();
+  if(points.size() < 6) return false;
   // lengths divided by the neighbourhood's radius: a well-scaled system
   double scale = 0.;
   for(const Vec3& q : points) scale = (std::max)(scale, norm(q - origin));
   if(!(scale > 0.)) return false;
+  // the normal equations, accumulated point by point in the lower triangle
+  // (a few dozen points: plain loops beat a general matrix product here)
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Jet rhs = Jet::Zero();
   for(const Vec3& q : points)
   {
     const Vec3 r = (1. / scale) * (q - origin);
     const double x = dot(r, x_axis), y = dot(r, y_axis), z = dot(r, normal);
-    Row row;
-    row.template head<6>() << x * x, x * y, y * y, x, y, 1.;
-    if constexpr(Terms == 10) row.template tail<4>() << x * x * x, x * x * y, x * y * y, y * y * y;
-    normal_matrix.noalias() += row * row.transpose();
-    rhs.noalias() += z * row;
+    const double row[6] = {x * x, x * y, y * y, x, y, 1.};
+    for(int i = 0; i < 6; ++i)
+    {
+      rhs[i] += z * row[i];
+      for(int j = 0; j <= i; ++j) normal_matrix(i, j) += row[i] * row[j];
+    }
   }
-  const Eigen::LDLT<Eigen::Matrix<double, Terms, Terms> > ldlt(normal_matrix);
-  const auto pivots = ldlt.vectorD();
-  if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > conditioning * pivots.maxCoeff())) return false;
-  const Row solution = ldlt.solve(rhs);
-  h = solution.template head<6>();
+  const Eigen::LLT<Eigen::Matrix<double, 6, 6>, Eigen::Lower> llt(normal_matrix);
+  if(llt.info() != Eigen::Success) return false;
+  const auto pivots = llt.matrixLLT().diagonal().array().square();  // the pivots of the elimination
+  if(!(pivots.minCoeff() > 1e-9 * pivots.maxCoeff())) return false;
+  h = llt.solve(rhs);
   h.head<3>() /= scale;  // back to the mesh's lengths: the quadratic terms scale by 1 / scale
   return h.allFinite();
 }
 
-// The jet of vertex v from its two-ring: cubic where the ring determines
-// one (its curvature is then second-order accurate, also on irregular
-// triangulations), quadratic otherwise.
-inline bool fit_jet(const Indexed_mesh& m, std::size_t v, const std::vector<std::size_t>& ring, const Vec3& x_axis,
-                    const Vec3& y_axis, const Vec3& normal, std::vector<Vec3>& points, Jet& h)
+// The marks of two_ring() for this thread: one per vertex, allocated once
+// per thread and mesh size, never cleared: each use takes a new generation,
+// and vertex v of it stamps (generation << 32) + v + 1, a value no other
+// vertex or generation uses (vertex indices are below 2^31).
+class Ring_marks
 {
-  points.assign(1, m.points[v]);
-  for(std::size_t u : ring) points.push_back(m.points[u]);
-  return fit_height_function<10>(points, m.points[v], x_axis, y_axis, normal, 1e-6, h) ||
-         fit_height_function<6>(points, m.points[v], x_axis, y_axis, normal, 1e-9, h);
-}
+  std::vector<std::uint64_t>& m_taken;
+  std::uint64_t m_generation;
+
+  static std::vector<std::uint64_t>& thread_marks() { thread_local std::vector<std::uint64_t> taken; return taken; }
+  static std::uint64_t& thread_generation() { thread_local std::uint64_t generation = 0; return generation; }
+
+public:
+  explicit Ring_marks(std::size_t vertices) : m_taken(thread_marks()), m_generation(++thread_generation())
+  {
+    if(m_taken.size() != vertices) m_taken.assign(vertices, 0);
+  }
+  std::vector<std::uint64_t>& taken() { return m_taken; }
+  std::uint64_t stamp(std::size_t v) const { return (m_generation << 32) + static_cast<std::uint64_t>(v) + 1; }
+};
 
 // The coefficient (n = 2) of the maximum-curvature line field at every vertex
 // with a face: (k_max - k_min) e^{2 i phi} in the vertex's tangent space.
@@ -166,17 +188,21 @@ inline std::vector<std::complex<double> > quadric_fit_line_field(const Indexed_m
   parallel_for_each_range(m.number_of_vertices(), [&](std::size_t begin, std::size_t end) {
     std::vector<std::size_t> ring;
     std::vector<Vec3> points;
+    Ring_marks marks(m.number_of_vertices());
     for(std::size_t v = begin; v < end; ++v)
     {
       if(m.fan_size(v) == 0 || !(norm(normals[v]) > 0.)) continue;
-      two_ring(m, v, ring);
+      two_ring(m, v, ring, marks.taken(), marks.stamp(v));
       const Vec3 normal = area_weighted_normal(m, v);
       if(!(norm(normal) > 0.)) continue;
       const Vec3 helper = std::abs(normal[0]) < 0.9 ? Vec3{1., 0., 0.} : Vec3{0., 1., 0.};
       const Vec3 x_axis = normalized(cross(helper, normal));
       const Vec3 y_axis = cross(normal, x_axis);
+      points.assign(1, m.points[v]);
+      for(std::size_t u : ring)
+        if(points.size() < std::size_t(max_fit_points)) points.push_back(m.points[u]);
       Jet h;
-      if(!fit_jet(m, v, ring, x_axis, y_axis, normal, points, h)) continue;
+      if(!fit_quadric(points, m.points[v], x_axis, y_axis, normal, h)) continue;
       line[v] = tangent_coefficient(m, ts, v, maximum_curvature_vector(h, x_axis, y_axis, normal), 2, normals[v]);
     }
   });

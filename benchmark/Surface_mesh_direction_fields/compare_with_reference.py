@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Runs the package and the paper's reference implementation (fieldgen) on the
+same meshes, interleaved, and prints their times and peak memory as ratios.
+
+    compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] MESH.off...
+
+DIR holds the drivers built by ../shared/tools/reference_implementations/
+build_anchors.sh (default /tmp/anchors). Each repetition runs, one after the
+other: fieldgen smoothest, the package smoothest, fieldgen curvature-aligned
+(lambda_t = 0), the package curvature-aligned (the default lambda_t = 0); the
+medians are compared. Times: fieldgen's time_ms (its own setup, assembly,
+factorization, iterations and indices; file reading excluded) against the
+package's total_ms (benchmark_direction_fields: mesh indexing to outputs; file
+reading excluded). Memory: fieldgen's whole process (maximum resident set)
+against the high-water mark of the package's computation, the mesh included.
+Both use the same CHOLMOD and OpenBLAS, and the same environment.
+"""
+import argparse
+import csv
+import io
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def run_fieldgen(anchors, obj, degree, mode):
+    out = subprocess.run(["/usr/bin/time", "-f", "MAXRSS %M", os.path.join(anchors, "fg_driver", "fg_driver_patched"),
+                          obj, str(degree), f"--mode={mode}"], capture_output=True, text=True, check=True)
+    text = out.stdout + out.stderr
+    time_ms = float(re.search(r"RESULT .* time_ms=([0-9.]+)", text).group(1))
+    peak_mb = float(re.search(r"MAXRSS ([0-9]+)", text).group(1)) / 1024.
+    singular = int(re.search(r"nSingFaces=([0-9]+)", text).group(1))
+    return time_ms, peak_mb, singular
+
+
+def run_package(benchmark, mesh, degree, aligned):
+    args = [benchmark, "--degree", str(degree), mesh]
+    if aligned:
+        args[1:1] = ["--align", "curvature"]
+    out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
+    rows = list(csv.DictReader(io.StringIO(out[out.index("mesh,vertices"):])))
+    row = rows[0]
+    return float(row["total_ms"]), float(row["peak_memory_mb"]), int(row["singular_faces"])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--anchors", default=os.environ.get("ANCHORS", "/tmp/anchors"))
+    parser.add_argument("--benchmark", default=os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields"))
+    parser.add_argument("--reps", type=int, default=3)
+    parser.add_argument("--degree", type=int, default=4)
+    parser.add_argument("meshes", nargs="+")
+    a = parser.parse_args()
+    for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj"), a.benchmark]:
+        if not os.access(tool, os.X_OK):
+            sys.exit(f"compare_with_reference.py: {tool} is missing (see the docstring)")
+    print("mesh,field,reference_ms,package_ms,time_ratio,reference_peak_mb,package_peak_mb,memory_ratio,"
+          "reference_singular_faces,package_singular_faces")
+    with tempfile.TemporaryDirectory() as tmp:
+        for mesh in a.meshes:
+            obj = os.path.join(tmp, os.path.basename(mesh) + ".obj")
+            subprocess.run([os.path.join(a.anchors, "off2obj"), mesh, obj], check=True, capture_output=True)
+            results = {(field, who): [] for field in ("smoothest", "aligned") for who in ("reference", "package")}
+            for _ in range(a.reps):
+                for field, mode in (("smoothest", "smooth"), ("aligned", "aligned")):
+                    results[(field, "reference")].append(run_fieldgen(a.anchors, obj, a.degree, mode))
+                    results[(field, "package")].append(run_package(a.benchmark, mesh, a.degree, field == "aligned"))
+            for field in ("smoothest", "aligned"):
+                ref, pkg = results[(field, "reference")], results[(field, "package")]
+                rt, pt = statistics.median(r[0] for r in ref), statistics.median(p[0] for p in pkg)
+                rm, pm = statistics.median(r[1] for r in ref), statistics.median(p[1] for p in pkg)
+                print(f"{os.path.basename(mesh)},{field},{rt:.1f},{pt:.1f},{pt / rt:.3f},{rm:.1f},{pm:.1f},{pm / rm:.3f},"
+                      f"{ref[0][2]},{pkg[0][2]}", flush=True)
+                print(f"  {field}: times reference {[round(r[0]) for r in ref]} package {[round(p[0]) for p in pkg]}",
+                      file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
