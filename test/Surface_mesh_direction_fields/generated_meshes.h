@@ -195,4 +195,59 @@ void make_disk(Mesh& mesh, int rings, double radius = 1.)
   }
 }
 
+// A closed cylinder: the open cylinder of make_cylinder() with a fan of
+// triangles on each end (two sharp rims, dihedral angle 90 degrees).
+template <typename Mesh>
+void make_capped_cylinder(Mesh& mesh, double R, double height, int nu, int nv)
+{
+  typedef typename Mesh::Point Point;
+  make_cylinder(mesh, R, height, nu, nv);
+  const auto bottom = mesh.add_vertex(Point(0., 0., 0.)), top = mesh.add_vertex(Point(0., 0., height));
+  for(int i = 0; i < nu; ++i)
+  {
+    const typename Mesh::Vertex_index a(static_cast<typename Mesh::size_type>(i));
+    const typename Mesh::Vertex_index b(static_cast<typename Mesh::size_type>((i + 1) % nu));
+    const typename Mesh::Vertex_index c(static_cast<typename Mesh::size_type>(nv * nu + i));
+    const typename Mesh::Vertex_index d(static_cast<typename Mesh::size_type>(nv * nu + (i + 1) % nu));
+    mesh.add_face(bottom, b, a);
+    mesh.add_face(top, c, d);
+  }
+}
+
+// The box [0, a] x [0, b] x [0, c], each side a grid of m x m squares cut
+// along alternating diagonals: 12 sharp edges, 8 corners.
+template <typename Mesh>
+void make_box(Mesh& mesh, double a, double b, double c, int m)
+{
+  typedef typename Mesh::Point Point;
+  std::map<std::array<int, 3>, typename Mesh::Vertex_index> vertex;
+  auto at = [&](std::array<int, 3> g) {
+    auto it = vertex.find(g);
+    if(it != vertex.end()) return it->second;
+    const auto v = mesh.add_vertex(Point(a * g[0] / m, b * g[1] / m, c * g[2] / m));
+    vertex.emplace(g, v);
+    return v;
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side <= 1; ++side)
+    {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;  // (u, w, axis) is right-handed
+      auto grid = [&](int i, int j) {
+        std::array<int, 3> g;
+        g[axis] = side * m;
+        g[u] = i;
+        g[w] = j;
+        return at(g);
+      };
+      for(int i = 0; i < m; ++i)
+        for(int j = 0; j < m; ++j)
+        {
+          auto p00 = grid(i, j), p10 = grid(i + 1, j), p11 = grid(i + 1, j + 1), p01 = grid(i, j + 1);
+          if(side == 0) { std::swap(p10, p01); }  // the outward normal points along -axis
+          if((i + j) % 2 == 0) { mesh.add_face(p00, p10, p11); mesh.add_face(p00, p11, p01); }
+          else { mesh.add_face(p00, p10, p01); mesh.add_face(p10, p11, p01); }
+        }
+    }
+}
+
 #endif

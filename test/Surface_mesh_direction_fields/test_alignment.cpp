@@ -11,10 +11,13 @@
 //  * a given lambda_t needs no lambda_1, and the class reuses its factorization;
 //  * Poincare-Hopf for aligned and constrained fields; constrained vertices keep
 //    their directions; boundary-aligned fields are tangent or normal to the boundary;
+//  * sharp features (a capped cylinder, a box, fandisk): a direction within
+//    1 degree of every feature polyline, Poincare-Hopf, no change without features;
 //  * the documented errors.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "field_checks.h"
@@ -361,6 +364,110 @@ static void check_constraints(Test_report& report)
   report.check(worst < 1e-9, "cylinder: boundary-aligned field tangent to the rims (" + std::to_string(worst) + ")");
 }
 
+// The largest angle, in degrees, between a sharp feature and the nearest of
+// the n directions, over the vertices inside a feature polyline (exactly two
+// feature edges, turning by at most 45 degrees).
+template <typename Directions, typename Is_feature>
+static double feature_direction_error(const Mesh& mesh, const Directions& d, const Is_feature& is_feature, int n)
+{
+  std::vector<std::vector<Vertex_index> > along(mesh.number_of_vertices());
+  for(auto e : mesh.edges())
+    if(get(is_feature, e))
+    {
+      const Vertex_index a = mesh.source(mesh.halfedge(e)), b = mesh.target(mesh.halfedge(e));
+      along[a].push_back(b);
+      along[b].push_back(a);
+    }
+  const std::vector<Vector_3> normals = angle_weighted_normals(mesh);
+  double worst = 0.;
+  for(Vertex_index v : mesh.vertices())
+  {
+    if(along[v].size() != 2) continue;
+    Vector_3 in = mesh.point(v) - mesh.point(along[v][0]), out = mesh.point(along[v][1]) - mesh.point(v);
+    in = in / std::sqrt(in.squared_length());
+    out = out / std::sqrt(out.squared_length());
+    if(in * out < std::cos(CGAL_PI / 4.)) continue;  // a corner of the polyline: free
+    // the feature's direction in the tangent plane (the directions are tangent vectors)
+    const Vector_3& nv = normals[v];
+    Vector_3 t = (in + out) - ((in + out) * nv) * nv;
+    t = t / std::sqrt(t.squared_length());
+    const Vector_3 dv = d[v];
+    double best = 180.;
+    for(int k = 0; k < n; ++k)
+    {
+      const double angle = 2. * CGAL_PI * k / n;
+      const Vector_3 dk = std::cos(angle) * dv + std::sin(angle) * CGAL::cross_product(nv, dv);
+      best = (std::min)(best, std::acos((std::min)(1., std::abs(dk * t) / std::sqrt(dk.squared_length()))) * 180. / CGAL_PI);
+    }
+    worst = (std::max)(worst, best);
+  }
+  return worst;
+}
+
+// Sharp features: on a capped cylinder, a box and fandisk (CGAL's
+// detect_sharp_edges at 60 degrees), every vertex inside a feature polyline
+// has a direction within 1 degree of the feature, with the smoothest and
+// with the curvature-aligned field; Poincare-Hopf holds; a map without any
+// feature gives the field without a map bit for bit; odd n is an error.
+static void check_features(Test_report& report)
+{
+  struct Case
+  {
+    std::string name;
+    Mesh mesh;
+  };
+  std::vector<Case> cases(2);
+  cases[0].name = "capped cylinder";
+  make_capped_cylinder(cases[0].mesh, 1., 2., 48, 16);
+  cases[1].name = "box";
+  make_box(cases[1].mesh, 2., 1.5, 1., 12);
+  const std::string fandisk = shared_mesh_path("fandisk.off");
+  if(!fandisk.empty())
+  {
+    cases.emplace_back();
+    cases.back().name = "fandisk";
+    CGAL::IO::read_polygon_mesh(fandisk, cases.back().mesh);
+  }
+  for(Case& k : cases)
+  {
+    Mesh& mesh = k.mesh;
+    auto is_feature = mesh.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 60., is_feature);
+    std::size_t features = 0;
+    for(auto e : mesh.edges()) features += is_feature[e];
+    const int chi = static_cast<int>(mesh.number_of_vertices()) - static_cast<int>(mesh.number_of_edges()) +
+                    static_cast<int>(mesh.number_of_faces());
+    for(bool curvature : {false, true})
+    {
+      auto d = direction_map(mesh, "v:feature_field");
+      auto np = params::degree(4).edge_is_feature_map(is_feature);
+      const SMDF::Direction_field_result r =
+        curvature ? SMDF::compute_globally_optimal_directions(
+                      mesh, d, np.principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM))
+                  : SMDF::compute_globally_optimal_directions(mesh, d, np);
+      const double worst = feature_direction_error(mesh, d, is_feature, 4);
+      const std::string name = k.name + (curvature ? ", curvature-aligned" : ", smoothest");
+      report.check(features > 0 && worst <= 1.,
+                   name + ": directions along the " + std::to_string(features) + " feature edges (" + std::to_string(worst) + " degrees)");
+      report.check(r.index_sum == 4 * chi, name + ": Poincare-Hopf with features");
+      mesh.remove_property_map(d);
+    }
+  }
+  // no feature in the map: the field without a map, bit for bit
+  Mesh& mesh = cases[0].mesh;
+  auto none = mesh.add_property_map<Mesh::Edge_index, bool>("e:none", false).first;
+  auto d0 = direction_map(mesh, "v:d0");
+  auto d1 = direction_map(mesh, "v:d1");
+  SMDF::compute_globally_optimal_directions(mesh, d0, params::degree(4));
+  SMDF::compute_globally_optimal_directions(mesh, d1, params::degree(4).edge_is_feature_map(none));
+  bool same = true;
+  for(Vertex_index v : mesh.vertices()) same = same && d0[v] == d1[v];
+  report.check(same, "an empty feature map leaves the field unchanged bit for bit");
+  report.check(throws_invalid_input([&] {
+    SMDF::compute_globally_optimal_directions(mesh, d0, params::degree(3).edge_is_feature_map(none)); }),
+    "features with odd n rejected");
+}
+
 static void check_errors(Test_report& report)
 {
   Mesh mesh;
@@ -392,6 +499,7 @@ int main()
   check_cylinder(report);
   check_ellipsoid_umbilics(report);
   check_one_factorization(report);
+  check_features(report);
   check_constraints(report);
   check_errors(report);
   return report.finish();

@@ -27,6 +27,7 @@ struct Options
   double lambda = 0., weight = 0.5;
   bool eigenvalue_bound = false;
   std::string curvature_estimate = "quadric-fit";
+  double feature_angle = -1.;  // negative: no feature alignment
 };
 
 // A problem with the input or the options: reported on one line, exit status 1.
@@ -38,7 +39,7 @@ inline const char* const usage =
   "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
-  "                       [--curvature-estimate quadric-fit|hopf]\n"
+  "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
   "                       [--streamlines FILE]\n";
 
@@ -82,6 +83,7 @@ inline Options parse_options(int argc, char** argv, const std::string& default_m
     else if(a == "--constrain-boundary") o.constrain_boundary = value();
     else if(a == "--eigenvalue-bound") o.eigenvalue_bound = true;
     else if(a == "--curvature-estimate") o.curvature_estimate = value();
+    else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, value());
     else if(a == "--vtk") o.vtk = value();
     else if(a == "--ply") o.ply = value();
     else if(a == "--rosy") o.rosy = value();
@@ -98,6 +100,8 @@ inline Options parse_options(int argc, char** argv, const std::string& default_m
     throw Usage_error("--align expects none, curvature, min-curvature or max-curvature, got '" + o.align + "'");
   if(o.constrain_boundary != "none" && o.constrain_boundary != "tangent" && o.constrain_boundary != "normal")
     throw Usage_error("--constrain-boundary expects tangent or normal, got '" + o.constrain_boundary + "'");
+  if(o.feature_angle != -1. && !(o.feature_angle > 0. && o.feature_angle < 180.))
+    throw Usage_error("--feature-angle expects an angle in degrees in (0, 180), got " + std::to_string(o.feature_angle));
   if(o.curvature_estimate != "quadric-fit" && o.curvature_estimate != "hopf")
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
   if(o.lambda_given && o.weight_given)

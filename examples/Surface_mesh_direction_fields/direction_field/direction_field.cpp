@@ -31,6 +31,8 @@
 //   --alignment-weight T  or the alignment weight t in (0, 1) to reach
 //   --constrain-boundary  fix one direction tangent (or normal) to the boundary
 //   --curvature-estimate  quadric-fit (default) or hopf (the paper's Hopf differential)
+//   --feature-angle DEG   one direction follows the sharp edges (dihedral angle
+//                         above DEG, CGAL's detect_sharp_edges); even n
 //   --eigenvalue-bound    also compute lambda_1 for aligned fields (the JSON's
 //                         eigenvalue_bound, null otherwise)
 //   --png FILE            a picture of the field (shaded mesh, directions,
@@ -53,6 +55,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "command_line_options.h"
@@ -159,11 +162,19 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_
                                                 : SMDF::Principal_curvature_estimate::QUADRIC_FIT)
                 .vertex_magnitude_map(CGAL::make_property_map(field.magnitudes))
                 .singularities_output_iterator(std::back_inserter(field.singular_faces));
+  // --feature-angle: the edges whose faces meet at more than DEG from flat (CGAL's detection)
+  std::vector<unsigned char> feature_storage(input.mesh.number_of_edges(), 0);
+  auto is_feature = CGAL::make_property_map(feature_storage);
+  if(o.feature_angle > 0.)
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(input.mesh, o.feature_angle, is_feature);
+  auto with_features = [&](auto np) {
+    if(o.feature_angle > 0.)
+      return SMDF::compute_globally_optimal_directions(input.mesh, directions, np.edge_is_feature_map(is_feature));
+    return SMDF::compute_globally_optimal_directions(input.mesh, directions, np);
+  };
   auto with_guidance = [&](auto np) {
-    if(o.guidance.empty())
-      return SMDF::compute_globally_optimal_directions(input.mesh, directions, np);
-    return SMDF::compute_globally_optimal_directions(input.mesh, directions,
-                                                     np.vertex_guidance_map(CGAL::make_property_map(guidance)));
+    if(o.guidance.empty()) return with_features(np);
+    return with_features(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
   };
   // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
   field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))

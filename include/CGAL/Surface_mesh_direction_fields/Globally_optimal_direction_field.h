@@ -52,6 +52,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -171,6 +172,8 @@ public:
                                       get_const_property_map(CGAL::vertex_point, tmesh));
     const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
     const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
+    m_tmesh = &tmesh;
+    m_index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
     const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
     if(!(mollification >= 0.) || !std::isfinite(mollification))
       throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
@@ -268,7 +271,7 @@ public:
                          choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
                                           CGAL::Emptyset_iterator()),
                          result);
-    write_directions(field.coefficients, result.degree, vertex_direction_map, result);
+    write_directions(field.coefficients, result.degree, requests.constraints, vertex_direction_map, result);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
       write_magnitudes(field.magnitudes, get_parameter(np, internal_np::vertex_magnitude_map));
 
@@ -335,6 +338,8 @@ private:
                                                         m_normals, degree, linear_solver, to_array);
     requests.constraints =
       internal::vertex_constraints(m_mesh, m_tangent_spaces, np, m_vertex_of_index, m_normals, degree, to_array);
+    internal::add_feature_constraints(*m_tmesh, np, m_index_of_vertex, m_mesh, m_tangent_spaces, m_normals, degree,
+                                      requests.constraints);
     requests.alignment = internal::alignment_request(np, !requests.guidance.empty());
     return requests;
   }
@@ -567,14 +572,17 @@ private:
   // The unit 3D direction of every vertex, into the user's map (computed in
   // parallel, written sequentially: a property map need not be thread-safe).
   template <typename VertexDirectionMap>
-  void write_directions(const std::vector<Complex>& u, int degree, VertexDirectionMap vertex_direction_map,
-                        Direction_field_result& result) const
+  void write_directions(const std::vector<Complex>& u, int degree, const internal::Vertex_constraints& constraints,
+                        VertexDirectionMap vertex_direction_map, Direction_field_result& result) const
   {
     typedef typename GeomTraits::FT FT;
     auto construct_vector = m_traits.construct_vector_3_object();
     std::vector<internal::Vec3> directions(m_vertex_of_index.size());
     internal::parallel_for_each_index(directions.size(), [&](std::size_t i) {
       directions[i] = internal::tangent_direction(m_mesh, m_tangent_spaces, i, u[i], degree, m_normals[i]);
+      // a prescribed direction exactly (see Vertex_constraints::shown)
+      if(!constraints.shown.empty() && constraints.is_constrained[i] && internal::norm(constraints.shown[i]) > 0.)
+        directions[i] = constraints.shown[i];
     });
     for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
     {
@@ -630,6 +638,8 @@ private:
   }
 
   GeomTraits m_traits;
+  const TriangleMesh* m_tmesh = nullptr;
+  std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;  // the vertex index map of the construction
   internal::Indexed_mesh m_mesh;
   internal::Tangent_spaces m_tangent_spaces;
   internal::Components m_components;

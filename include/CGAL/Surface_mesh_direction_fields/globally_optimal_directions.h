@@ -152,6 +152,19 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamType{`CGAL::Surface_mesh_direction_fields::Boundary_alignment`}
     \cgalParamDefault{`Boundary_alignment::NONE`}
   \cgalParamNEnd
+  \cgalParamNBegin{edge_is_feature_map}
+    \cgalParamDescription{the sharp features the field must follow: at every vertex with exactly two feature edges
+                          (inside a feature polyline), one of the `n` directions is fixed along the polyline (a hard
+                          constraint, from one neighbour to the other); corners where three or more feature edges meet
+                          and the ends of open polylines stay free. Combines with the smoothest field, curvature
+                          alignment and guidance; a vertex of `vertex_is_constrained_map` keeps its own direction, and a
+                          feature overrides `boundary_alignment` on the boundary. Requires an even `n` (along an edge
+                          is a line, not an oriented direction). `CGAL::Polygon_mesh_processing::detect_sharp_edges()`
+                          fills such a map.}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+                   as key type and `bool` as value type}
+    \cgalParamDefault{no feature}
+  \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
                           face and its integer index `k` (the field's index there is `k / n`)}

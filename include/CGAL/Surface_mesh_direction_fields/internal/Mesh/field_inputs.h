@@ -28,6 +28,7 @@
 #include <cmath>
 #include <complex>
 #include <string>
+#include <array>
 #include <vector>
 
 // The inputs of one field computation read from the named parameters: the
@@ -161,6 +162,19 @@ struct Vertex_constraints
 {
   std::vector<unsigned char> is_constrained;        // per vertex; empty: no constraint
   std::vector<std::complex<double> > values;        // unit coefficients where constrained
+  std::vector<unsigned char> by_user;               // constrained by vertex_is_constrained_map (empty: none)
+  // the unit direction the output shows at a constrained vertex (the zero
+  // vector: the layout of the coefficient), so that a prescribed direction
+  // is met exactly also where the angle rescaling distorts the layout
+  std::vector<Vec3> shown;
+
+  void constrain(std::size_t v, std::complex<double> c, const Vec3& direction)
+  {
+    is_constrained[v] = 1;
+    values[v] = c / std::abs(c);
+    if(shown.empty()) shown.assign(is_constrained.size(), Vec3{0., 0., 0.});
+    shown[v] = direction;
+  }
 };
 
 // Hard constraints: boundary alignment and/or vertex_is_constrained_map with
@@ -200,16 +214,73 @@ Vertex_constraints vertex_constraints(const Indexed_mesh& mesh, const Tangent_sp
       {
         const auto v = vertex_of_index[i];
         if(!get(is_constrained, v) || mesh.fan_size(i) == 0) continue;
-        const std::complex<double> c = tangent_coefficient(mesh, ts, i, to_array(get(directions, v)), degree, normals[i]);
+        Vec3 shown{0., 0., 0.};
+        const std::complex<double> c =
+          tangent_coefficient(mesh, ts, i, to_array(get(directions, v)), degree, normals[i], &shown);
         if(!(std::abs(c) > 0.) || !std::isfinite(std::abs(c)))
           throw Invalid_input_error("the prescribed direction of constrained vertex " + std::to_string(i) +
                                     " is zero, normal to the surface or not finite");
-        vc.is_constrained[i] = 1;
-        vc.values[i] = c / std::abs(c);
+        vc.constrain(i, c, shown);
+        if(vc.by_user.empty()) vc.by_user.assign(mesh.number_of_vertices(), 0);
+        vc.by_user[i] = 1;
       }
     }
   }
   return vc;
+}
+
+// Hard constraints along sharp features (named parameter
+// `edge_is_feature_map`; user manual, section "Aligned and Constrained
+// Fields"): at a vertex with exactly two feature edges (inside a feature
+// polyline), one of the n directions follows the polyline (the mean of its
+// two edge directions); corners (three or more feature edges, or two that
+// turn by more than 45 degrees) and the ends of open polylines stay free. Along an edge is a line, not an
+// oriented direction, so n must be even. Vertices already constrained by the
+// user's map keep their constraint.
+template <typename TriangleMesh, typename NamedParameters, typename IndexOfVertex>
+void add_feature_constraints(const TriangleMesh& tm, const NamedParameters& np, const IndexOfVertex& index_of,
+                             const Indexed_mesh& mesh, const Tangent_spaces& ts, const std::vector<Vec3>& normals,
+                             int degree, Vertex_constraints& vc)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+  {
+    if(degree % 2 != 0)
+      throw Invalid_input_error("alignment with sharp features needs an even degree n (got " + std::to_string(degree) +
+                                "): along an edge is a line, not an oriented direction");
+    const auto is_feature = get_parameter(np, internal_np::edge_is_feature);
+    const std::size_t nv = mesh.number_of_vertices();
+    std::vector<std::array<std::size_t, 2> > neighbour(nv, {no_index, no_index});
+    std::vector<unsigned char> feature_edges(nv, 0);
+    auto record = [&](std::size_t v, std::size_t w) {
+      if(feature_edges[v] < 2) neighbour[v][feature_edges[v]] = w;
+      if(feature_edges[v] < 255) ++feature_edges[v];
+    };
+    for(auto e : edges(tm))
+      if(get(is_feature, e))
+      {
+        const std::size_t a = index_of(source(halfedge(e, tm), tm)), b = index_of(target(halfedge(e, tm), tm));
+        record(a, b);
+        record(b, a);
+      }
+    if(vc.is_constrained.empty())
+    {
+      vc.is_constrained.assign(nv, 0);
+      vc.values.assign(nv, std::complex<double>(0., 0.));
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      if(feature_edges[v] != 2 || mesh.fan_size(v) == 0 || (!vc.by_user.empty() && vc.by_user[v])) continue;
+      const Vec3& p = mesh.points[v];
+      const Vec3 in = normalized(p - mesh.points[neighbour[v][0]]), out = normalized(mesh.points[neighbour[v][1]] - p);
+      if(!(dot(in, out) >= std::cos(CGAL_PI / 4.))) continue;  // the polyline turns by more than 45 degrees: a corner
+      Vec3 shown{0., 0., 0.};
+      const std::complex<double> c = tangent_coefficient(mesh, ts, v, in + out, degree, normals[v], &shown);
+      if(!(std::abs(c) > 0.) || !std::isfinite(std::abs(c))) continue;  // a feature along the normal: no tangent
+      vc.constrain(v, c, shown);
+    }
+  }
 }
 
 } // namespace internal

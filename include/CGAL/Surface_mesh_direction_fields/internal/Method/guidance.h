@@ -134,8 +134,16 @@ inline double rescaled_angle_of(const Indexed_mesh& m, const Tangent_spaces& ts,
 // directions are its rotations by 2 pi k / n about the normal. So among the n
 // rotations of w (projected to the tangent plane) the one whose rescaled angle
 // falls in [0, 2 pi / n) is chosen: the output then contains w exactly.
+//
+// `chosen`, if given, receives that rotation of w (unit, tangent), the
+// direction the output should show at v: where the angle rescaling at v
+// squeezes the first sector to less than 2 pi / n of Euclidean angle, no
+// rotation of w may lie exactly in it, and the layout of the coefficient is
+// then only the nearest direction (see the class, which writes `chosen`
+// itself at constrained vertices).
 inline std::complex<double> tangent_coefficient(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v,
-                                                const Vec3& vector, int degree, const Vec3& normal)
+                                                const Vec3& vector, int degree, const Vec3& normal,
+                                                Vec3* chosen = nullptr)
 {
   const Vec3 w = vector - dot(vector, normal) * normal;
   const double length = norm(w);
@@ -154,6 +162,7 @@ inline std::complex<double> tangent_coefficient(const Indexed_mesh& m, const Tan
     {
       best_distance = distance;
       best_phi = phi;
+      if(chosen != nullptr) *chosen = (1. / length) * wk;
       if(distance == 0.) break;
     }
   }
