@@ -5,7 +5,8 @@ same meshes, interleaved, and prints their times and peak memory as ratios.
     compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] [--warm K] MESH.off...
 
 DIR holds the drivers built by ../shared/tools/reference_implementations/
-build_anchors.sh (default /tmp/anchors). Each repetition runs, one after the
+build_anchors.sh (default: $ANCHORS, else "anchors" in the temporary directory,
+where that script builds). Each repetition runs, one after the
 other: fieldgen smoothest, the package smoothest, fieldgen curvature-aligned
 (lambda_t = 0), the package curvature-aligned (the default lambda_t = 0); the
 medians are compared. Times: fieldgen's time_ms (its own setup, assembly,
@@ -53,7 +54,7 @@ def run_package(benchmark, mesh, degree, aligned, warm):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--anchors", default=os.environ.get("ANCHORS", "/tmp/anchors"))
+    parser.add_argument("--anchors", default=os.environ.get("ANCHORS", os.path.join(tempfile.gettempdir(), "anchors")))
     parser.add_argument("--benchmark", default=os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields"))
     parser.add_argument("--reps", type=int, default=3)
     parser.add_argument("--degree", type=int, default=4)
