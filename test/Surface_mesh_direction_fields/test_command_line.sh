@@ -318,6 +318,22 @@ else
   echo "SKIPPED shared-mesh checks: ../shared/data/meshes not found"
 fi
 
+# 7b. Aligned fields: lambda_1 only when asked for (null otherwise); sharp features.
+"$bin" "$out/cube_quads.off" --degree 4 --align curvature --json > "$out/bound_none.json"
+"$bin" "$out/cube_quads.off" --degree 4 --align curvature --eigenvalue-bound --json > "$out/bound.json"
+check "--eigenvalue-bound: null without, lambda_1 above lambda_t with" python_checks "$out/bound_none.json" "$out/bound.json" <<'EOF2'
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert a["eigenvalue_bound"] is None and a["eigenvalues"] == [None] and a["lambda"] == 0, a
+assert b["eigenvalue_bound"] > b["lambda"] == 0 and a["index_sum"] == b["index_sum"] == 8, b
+EOF2
+"$bin" "$out/cube_quads.off" --degree 4 --feature-angle 60 --curvature-estimate hopf --align curvature --json > "$out/features.json"
+check "--feature-angle: Poincare-Hopf on the quad cube" python_checks "$out/features.json" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["index_sum"] == 8 and d["degree"] == 4, d
+EOF2
+
 # 8. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
 bad() {  # bad DESCRIPTION ARGS...
   local what=$1
@@ -344,6 +360,9 @@ bad "t outside (0, 1)" "$out/octahedron.off" --align curvature --alignment-weigh
 bad "lambda above lambda_1" "$out/octahedron.off" --guidance "$out/guidance6.txt" --lambda 1e9
 bad "guidance of the wrong size" "$out/octahedron.off" --guidance "$out/sing4.txt"
 bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.txt"
+bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
+bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
+bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
 
 echo "command line: $passed passed, $failed failed"
 test $failed -eq 0
