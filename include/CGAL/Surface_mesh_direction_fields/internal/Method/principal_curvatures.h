@@ -25,7 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdint>
+#include <array>
 #include <vector>
 
 // The principal-curvature line field from a local quadric fit (user manual,
@@ -67,26 +67,46 @@ typedef Eigen::Matrix<double, 6, 1> Jet;
 // valence keeps the nearest ones: the one-ring comes first).
 constexpr int max_fit_points = 64;
 
-// The vertices of the two-ring of v (v excluded, each once), into `ring`.
-// `taken` has an entry per vertex (kept by the caller from one vertex to the
-// next): a vertex is taken for v when its entry is `stamp`, a value that no
-// other call gives (see Ring_marks).
-inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size_t>& ring,
-                     std::vector<std::uint64_t>& taken, std::uint64_t stamp)
+// The vertex indices already taken into one two-ring: an open-addressing
+// set of a few hundred slots, cleared for each vertex (a two-ring is capped
+// below, so it never fills up).
+class Ring_set
+{
+  static constexpr std::size_t slots = 256;
+  std::array<std::size_t, slots> m_slot;
+
+public:
+  void clear() { m_slot.fill(no_index); }
+  // true if u was not in the set (and is now)
+  bool insert(std::size_t u)
+  {
+    for(std::size_t h = (u * 0x9E3779B97F4A7C15ull) >> 56;; h = (h + 1) % slots)
+    {
+      if(m_slot[h] == u) return false;
+      if(m_slot[h] == no_index)
+      {
+        m_slot[h] = u;
+        return true;
+      }
+    }
+  }
+};
+
+// The vertices of the two-ring of v (v excluded, each once, at most
+// max_fit_points - 1 of them, the one-ring first), into `ring`.
+inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size_t>& ring, Ring_set& taken)
 {
   ring.clear();
-  taken[v] = stamp;
+  taken.clear();
+  taken.insert(v);
   auto add_neighbours = [&](std::size_t w) {
     for(std::size_t corner : m.fan(w))
     {
       const auto& t = m.faces[corner / 3];
       const int c = static_cast<int>(corner % 3);
       for(std::size_t u : {std::size_t(t[(c + 1) % 3]), std::size_t(t[(c + 2) % 3])})
-        if(taken[u] != stamp)
-        {
-          taken[u] = stamp;
+        if(ring.size() + 1 < std::size_t(max_fit_points) && taken.insert(u))
           ring.push_back(u);
-        }
     }
   };
   add_neighbours(v);
@@ -158,27 +178,6 @@ inline bool fit_quadric(const std::vector<Vec3>& points, const Vec3& origin, con
   return h.allFinite();
 }
 
-// The marks of two_ring() for this thread: one per vertex, allocated once
-// per thread and mesh size, never cleared: each use takes a new generation,
-// and vertex v of it stamps (generation << 32) + v + 1, a value no other
-// vertex or generation uses (vertex indices are below 2^31).
-class Ring_marks
-{
-  std::vector<std::uint64_t>& m_taken;
-  std::uint64_t m_generation;
-
-  static std::vector<std::uint64_t>& thread_marks() { thread_local std::vector<std::uint64_t> taken; return taken; }
-  static std::uint64_t& thread_generation() { thread_local std::uint64_t generation = 0; return generation; }
-
-public:
-  explicit Ring_marks(std::size_t vertices) : m_taken(thread_marks()), m_generation(++thread_generation())
-  {
-    if(m_taken.size() != vertices) m_taken.assign(vertices, 0);
-  }
-  std::vector<std::uint64_t>& taken() { return m_taken; }
-  std::uint64_t stamp(std::size_t v) const { return (m_generation << 32) + static_cast<std::uint64_t>(v) + 1; }
-};
-
 // The coefficient (n = 2) of the maximum-curvature line field at every vertex
 // with a face: (k_max - k_min) e^{2 i phi} in the vertex's tangent space.
 inline std::vector<std::complex<double> > quadric_fit_line_field(const Indexed_mesh& m, const Tangent_spaces& ts,
@@ -188,19 +187,18 @@ inline std::vector<std::complex<double> > quadric_fit_line_field(const Indexed_m
   parallel_for_each_range(m.number_of_vertices(), [&](std::size_t begin, std::size_t end) {
     std::vector<std::size_t> ring;
     std::vector<Vec3> points;
-    Ring_marks marks(m.number_of_vertices());
+    Ring_set taken;
     for(std::size_t v = begin; v < end; ++v)
     {
       if(m.fan_size(v) == 0 || !(norm(normals[v]) > 0.)) continue;
-      two_ring(m, v, ring, marks.taken(), marks.stamp(v));
+      two_ring(m, v, ring, taken);
       const Vec3 normal = area_weighted_normal(m, v);
       if(!(norm(normal) > 0.)) continue;
       const Vec3 helper = std::abs(normal[0]) < 0.9 ? Vec3{1., 0., 0.} : Vec3{0., 1., 0.};
       const Vec3 x_axis = normalized(cross(helper, normal));
       const Vec3 y_axis = cross(normal, x_axis);
       points.assign(1, m.points[v]);
-      for(std::size_t u : ring)
-        if(points.size() < std::size_t(max_fit_points)) points.push_back(m.points[u]);
+      for(std::size_t u : ring) points.push_back(m.points[u]);
       Jet h;
       if(!fit_quadric(points, m.points[v], x_axis, y_axis, normal, h)) continue;
       line[v] = tangent_coefficient(m, ts, v, maximum_curvature_vector(h, x_axis, y_axis, normal), 2, normals[v]);
