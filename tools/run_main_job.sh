@@ -16,8 +16,8 @@ out=build/main_job
 export GLIBC_TUNABLES="${GLIBC_TUNABLES:-glibc.malloc.hugetlb=1}"
 build/bin/direction_field "$@" --directions $out/directions.txt --singularities $out/singularities.txt \
                                 --png $out/field.png --vtk $out/field.vtk --json-file $out/summary.json \
-                                --streamlines $out/streamlines.txt
+                                --streamlines $out/streamlines.vtp
 echo
 echo "Wrote $out/directions.txt (one unit vector per vertex), $out/singularities.txt (face, index k of k/n),"
 echo "      $out/summary.json, the picture $out/field.png and $out/field.vtk (ParaView: all n directions,"
-echo "      magnitude, singularities with their index), $out/streamlines.txt (field lines, drawn in the picture)"
+echo "      magnitude, singularities with their index), $out/streamlines.vtp (field lines, drawn in the picture)"

@@ -364,5 +364,25 @@ bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
 bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
 bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
 
+# 9. --help explains every option of the usage line; --version.
+"$bin" --help > "$out/help.txt"
+check "--help exits 0" test $? -eq 0
+check "--help: every option of the usage line, with a description" python_checks "$out/help.txt" <<'EOF2'
+import re, sys
+text = open(sys.argv[1]).read()
+usage = text.split("\n\n")[0]
+options = sorted(set(re.findall(r"--[a-z-]+", usage)))
+assert len(options) >= 25, options
+described = {}
+for line in text.split("\n"):
+    m = re.match(r"  (--[a-z-]+)(?:, -h)?(?: [A-Z]+)?\s+(\S.*)?$", line)
+    if m: described[m.group(1)] = m.group(2) or ""
+missing = [o for o in options if not described.get(o)]
+assert not missing, missing
+for group in ["Field:", "Alignment:", "Outputs:", "Program:"]: assert group in text, group
+assert "default" in text and "Exit status" in text
+EOF2
+check "--version" test "$("$bin" --version | cut -d' ' -f1)" = direction_field
+
 echo "command line: $passed passed, $failed failed"
 test $failed -eq 0

@@ -1,15 +1,22 @@
-// The options of the command-line program direction_field: what each one
-// means is in the usage text below and in the README ("Command line").
+// The options of the command-line program direction_field: one table says
+// what each one means (printed by --help, and in README.md "Command line"),
+// parse_options() reads and checks them.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
 
-#include <CGAL/config.h>
-
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+
+#ifndef SMDF_VERSION
+#define SMDF_VERSION "1.0"
+#endif
 
 struct Options
 {
@@ -17,8 +24,8 @@ struct Options
   int degree = 4;
   double s = 0.;
   std::string directions, singularities, png, json_file;
-  std::string vtk, ply, rosy, ffield, singularity_list, streamlines;
-  bool json = false;
+  std::string vtk, ply, rosy, ffield, singularity_list, streamlines, mesh_out;
+  bool json = false, quiet = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
@@ -30,8 +37,59 @@ struct Options
   double feature_angle = -1.;  // negative: no feature alignment
 };
 
+// The largest degree the program accepts. The library computes any degree up
+// to a million; the program's outputs grow with n (the VTK file holds n vectors
+// per vertex, the picture draws n strokes per vertex), and beyond a few hundred
+// directions most faces of a common mesh are singular anyway.
+constexpr int maximum_degree = 1000;
+
 // A problem with the input or the options: reported on one line, exit status 1.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+struct Option_help
+{
+  const char* group;
+  const char* option;
+  const char* text;
+};
+
+inline const Option_help option_help[] = {
+  {"Field", "MESH", "the mesh: OFF, OBJ, PLY (ASCII or binary) or STL (ASCII or binary); default: CGAL's fandisk.off. "
+                    "Read as a polygon soup and repaired when needed (the summary says what changed)"},
+  {"Field", "--degree N", "the number n of directions: 1 vector, 2 line, 4 cross field ... (1 to 1000; default 4)"},
+  {"Field", "--s S", "the smoothness parameter in [-1, 1]: -1 follows the intrinsic, +1 the extrinsic "
+                     "(shape) connection (default 0)"},
+  {"Field", "--seed N", "the seed of the random start vector of the eigen-solve (default 0)"},
+  {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
+  {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
+  {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
+                                "follow the principal curvature directions (even n)"},
+  {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
+                                   "no preference)"},
+  {"Alignment", "--lambda L", "the lambda_t of (A - lambda_t M) u = M q (default: chosen by the library)"},
+  {"Alignment", "--alignment-weight T", "or the alignment weight t in (0, 1) (lambda_t from lambda_1)"},
+  {"Alignment", "--constrain-boundary HOW", "tangent or normal: one direction fixed along the boundary"},
+  {"Alignment", "--feature-angle DEG", "one direction follows the sharp edges, whose faces meet more than DEG "
+                                       "degrees from flat (0 < DEG < 180; even n)"},
+  {"Alignment", "--curvature-estimate HOW", "quadric-fit (default) or hopf (the paper's Hopf differential)"},
+  {"Alignment", "--eigenvalue-bound", "also compute lambda_1 for aligned fields (the JSON's eigenvalue_bound)"},
+  {"Outputs", "--directions FILE", "one 'x y z' per vertex of MESH, in its order (17 significant digits)"},
+  {"Outputs", "--singularities FILE", "one 'f k' per singular face of MESH (index k/n)"},
+  {"Outputs", "--json", "one line of JSON on stdout instead of the summary (keys: README.md)"},
+  {"Outputs", "--json-file FILE", "the same line of JSON in FILE"},
+  {"Outputs", "--png FILE", "a picture: the shaded mesh from four sides, the field, the singularities, a legend"},
+  {"Outputs", "--vtk FILE", "the field for ParaView: .vtk (legacy) or .vtu (XML, also read by meshio)"},
+  {"Outputs", "--ply FILE", "PLY with per-vertex direction and magnitude, per-face singularity"},
+  {"Outputs", "--rosy FILE", "the per-face cross field for QuadWild/vcglib (n = 4 only)"},
+  {"Outputs", "--ffield FILE", "the per-face cross field as a vcglib frame file (n = 4 only)"},
+  {"Outputs", "--singularity-list FILE", "one 'face k n x y z' per singular face"},
+  {"Outputs", "--streamlines FILE", "field lines: .vtp or .vtu (VTK polylines), .obj ('l' lines), or any other "
+                                    "name: one 'N x1 y1 z1 ... xN yN zN' per line"},
+  {"Outputs", "--mesh-out FILE", "the repaired triangle mesh the outputs refer to (.off, .obj or .ply)"},
+  {"Outputs", "--quiet", "say nothing on stderr while running (progress is shown only on a terminal)"},
+  {"Program", "--help, -h", "this text"},
+  {"Program", "--version", "the program's version"},
+};
 
 inline const char* const usage =
   "usage: direction_field [MESH] [--degree N] [--s S] [--directions FILE] [--singularities FILE]\n"
@@ -41,71 +99,170 @@ inline const char* const usage =
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
-  "                       [--streamlines FILE]\n";
+  "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--help] [--version]\n";
+
+inline void print_help(std::ostream& os)
+{
+  os << usage << "\nComputes the globally smoothest (or aligned) n-direction field of a triangle mesh and its\n"
+     << "singular faces (Knoeppel, Crane, Pinkall, Schroeder 2013), with CGAL Surface_mesh_direction_fields.\n";
+  std::string group;
+  for(const Option_help& h : option_help)
+  {
+    if(group != h.group) { group = h.group; os << "\n" << group << ":\n"; }
+    os << "  " << h.option;
+    const std::string option = h.option;
+    if(option.size() < 26) os << std::string(26 - option.size(), ' ');
+    else os << "\n" << std::string(28, ' ');
+    // the description wrapped at 100 columns, continued under itself
+    std::size_t column = 28;
+    const std::string description = h.text;
+    for(std::size_t start = 0; start < description.size();)
+    {
+      std::size_t end = description.find(' ', start);
+      if(end == std::string::npos) end = description.size();
+      if(column + (end - start) > 100 && column > 28) { os << "\n" << std::string(28, ' '); column = 28; }
+      else if(column > 28) { os << ' '; ++column; }
+      os << description.substr(start, end - start);
+      column += end - start;
+      start = end + 1;
+    }
+    os << "\n";
+  }
+  os << "\nOutput files are written only when the whole run succeeds. Exit status: 0 on success (also when\n"
+     << "the eigen-solve stops before its tolerance: the JSON's converged is then false, and stderr says\n"
+     << "so); 1 with one line on stderr for bad input, bad options or an output that cannot be written.\n";
+}
+
+// A number, compactly, for messages.
+inline std::string compact(double x)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
 {
-  std::istringstream is(text);
-  T value;
-  char rest;
-  if(!(is >> value) || (is >> rest))
-    throw Usage_error("option " + option + " expects a number, got '" + text + "'");
+  T value{};
+  const char* first = text.c_str();
+  const char* last = first + text.size();
+  const std::from_chars_result r = std::from_chars(first + (text.size() > 1 && text[0] == '+'), last, value);
+  if(text.empty() || r.ec != std::errc() || r.ptr != last)
+    throw Usage_error("option " + option + " expects " + (std::is_integral<T>::value ? "an integer" : "a number") +
+                      ", got '" + text + "'");
+  if constexpr(std::is_floating_point<T>::value)
+    if(!std::isfinite(value)) throw Usage_error("option " + option + " expects a finite number, got '" + text + "'");
   return value;
 }
 
-// `default_mesh` is used when no MESH is given.
-inline Options parse_options(int argc, char** argv, const std::string& default_mesh)
+inline unsigned int parse_count(const std::string& option, const std::string& text)
 {
-  Options o;
-  for(int i = 1; i < argc; ++i)
+  const long long value = parse_number<long long>(option, text);
+  if(value < 0 || value > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
+    throw Usage_error("option " + option + " expects an integer from 0 to 4294967295, got '" + text + "'");
+  return static_cast<unsigned int>(value);
+}
+
+// The options that name an output file, and where they go.
+inline std::string* output_option(Options& o, const std::string& a)
+{
+  if(a == "--directions") return &o.directions;
+  if(a == "--singularities") return &o.singularities;
+  if(a == "--png") return &o.png;
+  if(a == "--json-file") return &o.json_file;
+  if(a == "--vtk") return &o.vtk;
+  if(a == "--ply") return &o.ply;
+  if(a == "--rosy") return &o.rosy;
+  if(a == "--ffield") return &o.ffield;
+  if(a == "--singularity-list") return &o.singularity_list;
+  if(a == "--streamlines") return &o.streamlines;
+  if(a == "--mesh-out") return &o.mesh_out;
+  return nullptr;
+}
+
+// The options with a value; false if `a` is none of them.
+inline bool parse_valued_option(Options& o, const std::string& a, const std::string& v)
+{
+  if(std::string* path = output_option(o, a))
   {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
-      return argv[++i];
-    };
-    if(a == "--help" || a == "-h") { std::cout << usage; std::exit(EXIT_SUCCESS); }
-    else if(a == "--degree") o.degree = parse_number<int>(a, value());
-    else if(a == "--s") o.s = parse_number<double>(a, value());
-    else if(a == "--directions") o.directions = value();
-    else if(a == "--singularities") o.singularities = value();
-    else if(a == "--png") o.png = value();
-    else if(a == "--json") o.json = true;
-    else if(a == "--json-file") o.json_file = value();
-    else if(a == "--seed") o.seed = parse_number<unsigned int>(a, value());
-    else if(a == "--max-iterations") o.max_iterations = parse_number<unsigned int>(a, value());
-    else if(a == "--tolerance") o.tolerance = parse_number<double>(a, value());
-    else if(a == "--align") o.align = value();
-    else if(a == "--guidance") o.guidance = value();
-    else if(a == "--lambda") { o.lambda = parse_number<double>(a, value()); o.lambda_given = true; }
-    else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, value()); o.weight_given = true; }
-    else if(a == "--constrain-boundary") o.constrain_boundary = value();
-    else if(a == "--eigenvalue-bound") o.eigenvalue_bound = true;
-    else if(a == "--curvature-estimate") o.curvature_estimate = value();
-    else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, value());
-    else if(a == "--vtk") o.vtk = value();
-    else if(a == "--ply") o.ply = value();
-    else if(a == "--rosy") o.rosy = value();
-    else if(a == "--ffield") o.ffield = value();
-    else if(a == "--singularity-list") o.singularity_list = value();
-    else if(a == "--streamlines") o.streamlines = value();
-    else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a);
-    else if(o.mesh.empty()) o.mesh = a;
-    else throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
+    if(v.empty()) throw Usage_error("option " + a + " expects a file name, got ''");
+    *path = v;
   }
-  if(o.mesh.empty())
-    o.mesh = default_mesh;
+  else if(a == "--degree")
+  {
+    const long long n = parse_number<long long>(a, v);
+    if(n < 1 || n > maximum_degree)
+      throw Usage_error("--degree expects an integer from 1 to " + std::to_string(maximum_degree) + ", got " + v);
+    o.degree = static_cast<int>(n);
+  }
+  else if(a == "--s") o.s = parse_number<double>(a, v);
+  else if(a == "--seed") o.seed = parse_count(a, v);
+  else if(a == "--max-iterations") o.max_iterations = parse_count(a, v);
+  else if(a == "--tolerance") o.tolerance = parse_number<double>(a, v);
+  else if(a == "--align") o.align = v;
+  else if(a == "--guidance") o.guidance = v;
+  else if(a == "--lambda") { o.lambda = parse_number<double>(a, v); o.lambda_given = true; }
+  else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, v); o.weight_given = true; }
+  else if(a == "--constrain-boundary") o.constrain_boundary = v;
+  else if(a == "--curvature-estimate") o.curvature_estimate = v;
+  else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
+  else return false;
+  return true;
+}
+
+// The values that are words, and the combinations of options.
+inline void check_options(const Options& o)
+{
+  if(!(o.s >= -1. && o.s <= 1.)) throw Usage_error("--s expects a number in [-1, 1], got " + compact(o.s));
+  if(!(o.tolerance >= 0.)) throw Usage_error("--tolerance expects a number >= 0, got " + compact(o.tolerance));
   if(o.align != "none" && o.align != "curvature" && o.align != "min-curvature" && o.align != "max-curvature")
     throw Usage_error("--align expects none, curvature, min-curvature or max-curvature, got '" + o.align + "'");
   if(o.constrain_boundary != "none" && o.constrain_boundary != "tangent" && o.constrain_boundary != "normal")
     throw Usage_error("--constrain-boundary expects tangent or normal, got '" + o.constrain_boundary + "'");
   if(o.feature_angle != -1. && !(o.feature_angle > 0. && o.feature_angle < 180.))
-    throw Usage_error("--feature-angle expects an angle in degrees in (0, 180), got " + std::to_string(o.feature_angle));
+    throw Usage_error("--feature-angle expects an angle in degrees in (0, 180), got " + compact(o.feature_angle));
   if(o.curvature_estimate != "quadric-fit" && o.curvature_estimate != "hopf")
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
-  if(o.lambda_given && o.weight_given)
-    throw Usage_error("give either --lambda or --alignment-weight, not both");
+  if(o.lambda_given && o.weight_given) throw Usage_error("give either --lambda or --alignment-weight, not both");
+  if(o.weight_given && !(o.weight > 0. && o.weight < 1.))
+    throw Usage_error("--alignment-weight expects a number in (0, 1), got " + compact(o.weight));
+  if((o.lambda_given || o.weight_given) && o.align == "none" && o.guidance.empty())
+    throw Usage_error(std::string(o.lambda_given ? "--lambda" : "--alignment-weight") +
+                      " needs something to align to (--align or --guidance)");
+  if((!o.rosy.empty() || !o.ffield.empty()) && o.degree != 4)
+    throw Usage_error(std::string(o.rosy.empty() ? "--ffield" : "--rosy") +
+                      " describes cross fields (n = 4) only, as vcglib and QuadWild read them; n is " +
+                      std::to_string(o.degree));
+}
+
+// `default_mesh()` is called when no MESH is given.
+template <typename DefaultMesh>
+Options parse_options(int argc, char** argv, const DefaultMesh& default_mesh)
+{
+  Options o;
+  bool mesh_given = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--help" || a == "-h") { print_help(std::cout); std::exit(EXIT_SUCCESS); }
+    if(a == "--version") { std::cout << "direction_field " << SMDF_VERSION << "\n"; std::exit(EXIT_SUCCESS); }
+    if(a == "--json") o.json = true;
+    else if(a == "--quiet") o.quiet = true;
+    else if(a == "--eigenvalue-bound") o.eigenvalue_bound = true;
+    else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
+    {
+      if(i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
+      if(!parse_valued_option(o, a, argv[i + 1])) throw Usage_error("unknown option " + a + " (see --help)");
+      ++i;
+    }
+    else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a + " (see --help)");
+    else if(mesh_given) throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
+    else if(a.empty()) throw Usage_error("the mesh file name is empty");
+    else { o.mesh = a; mesh_given = true; }
+  }
+  if(!mesh_given) o.mesh = default_mesh();
+  check_options(o);
   return o;
 }
 

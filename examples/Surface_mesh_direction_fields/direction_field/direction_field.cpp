@@ -1,55 +1,15 @@
 // direction_field: the command-line program of Surface_mesh_direction_fields.
 //
-//   direction_field [MESH] [--degree N] [--s S] [--directions FILE]
-//                   [--singularities FILE] [--json] [--png FILE]
-//                   [--json-file FILE] [--seed N] [--max-iterations N] [--tolerance T]
-//                   [--align none|curvature|min-curvature|max-curvature] [--guidance FILE]
-//                   [--lambda L | --alignment-weight T] [--constrain-boundary tangent|normal]
-//                   [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]
-//                   [--streamlines FILE]
+// Computes the globally smoothest (or aligned) n-direction field of a mesh
+// (OFF, OBJ, PLY or STL) and its singular faces, and writes what the options
+// ask for. The options, their defaults and the files written are described
+// once, in command_line_options.h (printed by --help) and in README.md. The
+// contract of the options, the output files and the JSON keys is relied upon
+// by other programs: it is only ever extended.
 //
-// Computes the globally smoothest n-direction field of a mesh (OFF, OBJ, PLY
-// or STL) and its singular faces. The file is read as a polygon soup and
-// repaired if needed (read_and_repair_mesh.h: duplicate points merged,
-// polygons triangulated, orientation made consistent, non-manifold vertices
-// duplicated); the summary says what was changed. With no MESH, CGAL's fandisk
-// (Debian package libcgal-demo) is used. The contract of the first six
-// options is relied upon by other programs: it is only ever extended.
-//
-// Outputs
-//   --directions FILE     one line "x y z" per vertex (17 significant digits),
-//                         in the order of the input file's vertices
-//   --singularities FILE  one line "f k" per singular face: the face's index in
-//                         the input file and its integer index k (index k/n)
-//   --json                one line of JSON on stdout (see README.md)
-//   --json-file FILE      the same line of JSON written to FILE
-//   --align ...           guidance by the principal curvatures (even degrees):
-//                         curvature = max-curvature (for n = 4 both at once)
-//   --guidance FILE       guidance by a vector field, one "x y z" per vertex of the
-//                         file (length = weight, zero = no preference)
-//   --lambda L            the lambda_t of (A - lambda_t M) u = M q (default 0)
-//   --alignment-weight T  or the alignment weight t in (0, 1) to reach
-//   --constrain-boundary  fix one direction tangent (or normal) to the boundary
-//   --curvature-estimate  quadric-fit (default) or hopf (the paper's Hopf differential)
-//   --feature-angle DEG   one direction follows the sharp edges (dihedral angle
-//                         above DEG, CGAL's detect_sharp_edges); even n
-//   --eigenvalue-bound    also compute lambda_1 for aligned fields (the JSON's
-//                         eigenvalue_bound, null otherwise)
-//   --png FILE            a picture of the field (shaded mesh, directions,
-//                         singular faces in red (+) and blue (-))
-//   The next files describe the repaired mesh (its vertices and triangles),
-//   written by CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h:
-//   --vtk FILE            legacy VTK PolyData for ParaView: all n directions,
-//                         the magnitude, the singularities as points with their index
-//   --ply FILE            PLY with per-vertex direction (dx dy dz) and magnitude,
-//                         per-face singularity integer k
-//   --rosy FILE           the field moved to the faces, as read by vcglib/QuadWild
-//   --ffield FILE         the same as a per-face frame file (vcglib's .ffield)
-//   --singularity-list FILE  one line "face k n x y z" per singular face
-//   --streamlines FILE    field lines of the per-face field (streamlines.h), one
-//                         polyline per line: "N x1 y1 z1 ... xN yN zN" (CGAL's
-//                         polylines text format); with --png they are drawn
-//                         instead of the direction glyphs
+// main() is a sequence of steps: options, outputs tried (output_files.h),
+// mesh read (read_polygon_soup.h) and repaired (read_and_repair_mesh.h), the
+// library call, outputs written, then all renamed into place at once.
 // Exit status 0 on success; otherwise 1, with one line on stderr.
 
 #include <CGAL/Simple_cartesian.h>
@@ -59,6 +19,10 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "command_line_options.h"
+#include "exchange_files.h"
+#include "number_writer.h"
+#include "output_files.h"
+#include "progress.h"
 #include "png_snapshot.h"
 #include "read_and_repair_mesh.h"
 #include "reports.h"
@@ -92,23 +56,6 @@ struct Computed_field
   std::vector<std::pair<Face_index, int> > singular_faces;
   SMDF::Direction_field_result result;
 };
-
-void open_or_throw(std::ofstream& os, const std::string& path)
-{
-  os.open(path);
-  if(!os) throw Usage_error("cannot write '" + path + "'");
-}
-
-// Writes `path` with writer(stream), if a path is given.
-template <typename Writer>
-void write_file(const std::string& path, const Writer& writer)
-{
-  if(path.empty()) return;
-  std::ofstream os;
-  open_or_throw(os, path);
-  writer(os);
-  if(!os) throw Usage_error("cannot write '" + path + "'");
-}
 
 // --guidance: one vector per vertex of the file, carried to the mesh's
 // vertices (copies included).
@@ -182,59 +129,34 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_
 }
 
 // --directions and --singularities, in the order of the file's vertices and faces.
-void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input, const Computed_field& field)
+void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input, const Computed_field& field,
+                              Output_files& outputs)
 {
-  write_file(o.directions, [&](std::ostream& os) {
-    os << std::setprecision(17);
+  if(!o.directions.empty())
+  {
+    Number_writer w(outputs.stream(o.directions));
     for(Vertex_index v : input.vertex_of_file_vertex)  // a merged or duplicated vertex: its first copy
     {
       const Vector_3& d = field.directions[std::size_t(v)];
-      os << d.x() << " " << d.y() << " " << d.z() << "\n";
+      w.line(d.x(), d.y(), d.z());
     }
-  });
-  write_file(o.singularities, [&](std::ostream& os) {
+    w.flush();
+  }
+  if(!o.singularities.empty())
+  {
     // per face of the file (a triangulated polygon: the sum over its triangles)
-    std::map<std::size_t, int> index_of_file_face;
+    std::map<std::size_t, long long> index_of_file_face;
     for(const auto& fk : field.singular_faces)
       index_of_file_face[input.file_face_of_face[static_cast<std::size_t>(fk.first)]] += fk.second;
+    std::ostream& os = outputs.stream(o.singularities);
     for(const auto& fk : index_of_file_face)
       if(fk.second != 0) os << fk.first << " " << fk.second << "\n";
-  });
-}
-
-// The exchange files of the repaired mesh (IO/direction_field_files.h) and
-// the field lines; returns the field lines (empty unless asked for).
-std::vector<SMDF::Streamline> write_exchange_files(const Options& o, const Mesh& mesh, const Computed_field& field)
-{
-  std::vector<SMDF::Streamline> streamlines;
-  if(o.vtk.empty() && o.ply.empty() && o.rosy.empty() && o.ffield.empty() && o.singularity_list.empty() &&
-     o.streamlines.empty())
-    return streamlines;
-  const SMDF::Direction_field_data data = SMDF::make_direction_field_data(
-    mesh, CGAL::make_property_map(field.directions), field.result, field.singular_faces,
-    CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(field.magnitudes)));
-  write_file(o.vtk, [&](std::ostream& os) { SMDF::IO::write_VTK(os, data); });
-  write_file(o.ply, [&](std::ostream& os) { SMDF::IO::write_PLY(os, data); });
-  write_file(o.rosy, [&](std::ostream& os) { SMDF::IO::write_rosy(os, data); });
-  write_file(o.ffield, [&](std::ostream& os) { SMDF::IO::write_ffield(os, data); });
-  write_file(o.singularity_list, [&](std::ostream& os) { SMDF::IO::write_singularities(os, data); });
-  if(o.streamlines.empty()) return streamlines;
-  streamlines = SMDF::trace_streamlines(data);
-  write_file(o.streamlines, [&](std::ostream& os) {
-    os << std::setprecision(17);
-    for(const SMDF::Streamline& l : streamlines)
-    {
-      os << l.points.size();
-      for(const auto& p : l.points) os << " " << p[0] << " " << p[1] << " " << p[2];
-      os << "\n";
-    }
-  });
-  return streamlines;
+  }
 }
 
 // --png: the shaded mesh with the field (or its lines) and the singular faces.
 void write_picture(const Options& o, const Mesh& mesh, const Computed_field& field,
-                   const std::vector<SMDF::Streamline>& streamlines)
+                   const std::vector<SMDF::Streamline>& streamlines, Output_files& outputs)
 {
   png_snapshot::Scene scene;
   scene.degree = o.degree;
@@ -255,8 +177,44 @@ void write_picture(const Options& o, const Mesh& mesh, const Computed_field& fie
   for(const SMDF::Streamline& l : streamlines) scene.polylines.push_back(l.points);
   scene.face_index.assign(mesh.number_of_faces(), 0);
   for(const auto& fk : field.singular_faces) scene.face_index[static_cast<std::size_t>(fk.first)] = fk.second;
-  if(!png_snapshot::render(scene, o.png))
-    throw Usage_error("cannot write '" + o.png + "'");
+  png_snapshot::render(scene, outputs.stream(o.png));
+}
+
+// Every output path of the options, tried before the mesh is read.
+void register_outputs(const Options& o, Output_files& outputs)
+{
+  const std::pair<const char*, const std::string*> paths[] = {
+    {"--directions", &o.directions}, {"--singularities", &o.singularities}, {"--json-file", &o.json_file},
+    {"--png", &o.png}, {"--vtk", &o.vtk}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
+    {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out}};
+  for(const auto& p : paths) outputs.add(p.first, *p.second, o.mesh);
+  if(!o.guidance.empty())
+    for(const auto& p : paths)
+      if(*p.second == o.guidance) throw Usage_error(std::string(p.first) + " would overwrite the --guidance file");
+}
+
+// What the computation did, on stderr while running; a solve that stopped
+// before its tolerance is said there even with --quiet.
+void report_computation(const Progress& progress, const SMDF::Direction_field_result& r)
+{
+  std::ostringstream line;
+  line << "setup " << compact(r.timings.setup_ms) << " ms, factorization " << compact(r.timings.factorization_ms)
+       << " ms, solve " << compact(r.timings.solve_ms) << " ms: " << r.iterations << " iterations, residual "
+       << compact(r.residual);
+  progress.say(line.str());
+  if(!r.converged)
+    std::cerr << "direction_field: warning: the eigen-solve stopped after " << r.iterations
+              << " iterations with residual " << compact(r.residual) << ", above the tolerance" << std::endl;
+}
+
+// The summary or the JSON on stdout, checked.
+void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
+                  const Program_timings& timings)
+{
+  if(o.json) write_json(std::cout, o, input, r, timings);
+  else write_summary(std::cout, o, input, r, timings);
+  std::cout.flush();
+  if(!std::cout) throw Usage_error("cannot write to standard output");
 }
 
 } // namespace
@@ -265,17 +223,40 @@ int main(int argc, char** argv)
 {
   try
   {
-    const Options o = parse_options(argc, argv, CGAL::data_file_path("meshes/fandisk.off"));
-    const Repaired_mesh<Mesh> input = read_and_repair_mesh<Mesh>(o.mesh);
+    const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
+    Output_files outputs;
+    register_outputs(o, outputs);
+    Progress progress(o.quiet);
+    Program_timings timings;
+    progress.begin("reading " + o.mesh, timings.read);
+    Polygon_soup soup = read_polygon_soup(o.mesh);
+    progress.end();
+    progress.begin("repairing", timings.repair);
+    const Repaired_mesh<Mesh> input = repair_into_mesh<Mesh>(soup, o.mesh);
+    soup = Polygon_soup();
+    progress.end();
     Computed_field field(input.mesh);
+    double compute_ms = 0.;
+    progress.begin("computing the field", compute_ms);
     compute_field(o, input, field);
-    write_file_order_outputs(o, input, field);
-    const std::vector<SMDF::Streamline> streamlines = write_exchange_files(o, input.mesh, field);
-    if(!o.png.empty()) write_picture(o, input.mesh, field, streamlines);
-    write_file(o.json_file, [&](std::ostream& os) { write_json(os, o, input, field.result); });
-    if(o.json) write_json(std::cout, o, input, field.result);
-    else write_summary(std::cout, o, input, field.result);
+    progress.end();
+    report_computation(progress, field.result);
+    progress.begin("writing", timings.write);
+    write_file_order_outputs(o, input, field, outputs);
+    const std::vector<SMDF::Streamline> streamlines = write_exchange_files(o, input.mesh, field.directions,
+                                                                           field.magnitudes, field.singular_faces,
+                                                                           field.result, outputs);
+    if(!o.png.empty()) write_picture(o, input.mesh, field, streamlines, outputs);
+    outputs.close_all_except(o.json_file);
+    progress.end();
+    if(!o.json_file.empty()) write_json(outputs.stream(o.json_file), o, input, field.result, timings);
+    write_report(o, input, field.result, timings);
+    outputs.commit();
     return EXIT_SUCCESS;
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "direction_field: error: out of memory" << std::endl;
   }
   catch(const std::exception& e)  // bad input, bad options, unwritable outputs: one line
   {

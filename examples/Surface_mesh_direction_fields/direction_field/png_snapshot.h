@@ -1,7 +1,8 @@
 // A headless picture of a direction field: a small software rasterizer that
-// draws the shaded mesh, the n directions at evenly spread vertices, and the
-// singular faces (red: positive index, blue: negative), and writes a PNG with
-// no library beyond the standard one. Used by the command-line program; not
+// draws the shaded mesh from four sides, the field (its lines, or the n
+// directions at evenly spread vertices), the singular faces (red: positive
+// index, blue: negative) and a legend, and writes a PNG with no library
+// beyond the standard one (and zlib when the build found it). Used by the command-line program; not
 // part of the package's API.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
@@ -12,8 +13,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
+#include <ostream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -68,7 +70,7 @@ inline void put32(std::vector<unsigned char>& out, std::uint32_t v)
   for(int s = 24; s >= 0; s -= 8) out.push_back(static_cast<unsigned char>(v >> s));
 }
 
-inline void chunk(std::ofstream& os, const char* type, const std::vector<unsigned char>& data)
+inline void chunk(std::ostream& os, const char* type, const std::vector<unsigned char>& data)
 {
   std::vector<unsigned char> buf;
   put32(buf, static_cast<std::uint32_t>(data.size()));
@@ -99,10 +101,8 @@ inline std::vector<unsigned char> stored_zlib_stream(const std::vector<unsigned 
   return z;
 }
 
-inline bool write_png(const std::string& path, int w, int h, const std::vector<unsigned char>& rgb)
+inline bool write_png(std::ostream& os, int w, int h, const std::vector<unsigned char>& rgb)
 {
-  std::ofstream os(path, std::ios::binary);
-  if(!os) return false;
   const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
   os.write(reinterpret_cast<const char*>(signature), 8);
   std::vector<unsigned char> ihdr;
@@ -194,102 +194,217 @@ public:
   }
 };
 
-// Renders the scene seen from `view` (a direction towards the camera) and writes it.
-inline bool render(const Scene& s, const std::string& path, int width = 1024, int height = 1024,
-                   V3 view = {0.55, 0.35, 0.76})
+// --- the legend's text: a 5 x 7 pixel font for the characters it needs
+
+inline const unsigned char* glyph_rows(char c)
 {
-  if(s.points.empty() || s.triangles.empty()) return false;
-  V3 lo = s.points[0], hi = s.points[0];
-  for(const V3& p : s.points)
-    for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
-  const V3 center = 0.5 * (lo + hi);
-  const double radius = 0.5 * norm(hi - lo);
-  view = unit(view);
+  static const struct { char c; unsigned char rows[7]; } font[] = {
+    {'0', {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}}, {'1', {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E}},
+    {'2', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}}, {'3', {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E}},
+    {'4', {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}}, {'5', {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E}},
+    {'6', {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}}, {'7', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08}},
+    {'8', {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}}, {'9', {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C}},
+    {'+', {0x00, 0x04, 0x04, 0x1F, 0x04, 0x04, 0x00}}, {'-', {0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00}},
+    {'/', {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x00}}, {'=', {0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00}},
+    {':', {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}}, {'n', {0x00, 0x00, 0x16, 0x19, 0x11, 0x11, 0x11}},
+    {'i', {0x04, 0x00, 0x0C, 0x04, 0x04, 0x04, 0x0E}}, {'d', {0x01, 0x01, 0x0D, 0x13, 0x11, 0x11, 0x0F}},
+    {'e', {0x00, 0x00, 0x0E, 0x11, 0x1F, 0x10, 0x0E}}, {'x', {0x00, 0x00, 0x11, 0x0A, 0x04, 0x0A, 0x11}}};
+  for(const auto& g : font)
+    if(g.c == c) return g.rows;
+  return nullptr;  // a space
+}
+
+// Text at (x, y), its top left corner, each font pixel `size` pixels wide.
+inline void text(Canvas& canvas, int x, int y, const std::string& s, int size, const std::array<unsigned char, 3>& col)
+{
+  for(char c : s)
+  {
+    if(const unsigned char* rows = glyph_rows(c))
+      for(int r = 0; r < 7; ++r)
+        for(int b = 0; b < 5; ++b)
+          if(rows[r] & (0x10 >> b))
+            for(int dy = 0; dy < size; ++dy)
+              for(int dx = 0; dx < size; ++dx) canvas.set(x + b * size + dx, y + r * size + dy, col);
+    x += 6 * size;
+  }
+}
+
+inline std::array<unsigned char, 3> index_colour(int k)
+{
+  if(k > 0) return k == 1 ? std::array<unsigned char, 3>{225, 35, 35} : std::array<unsigned char, 3>{140, 0, 0};
+  return k == -1 ? std::array<unsigned char, 3>{35, 75, 225} : std::array<unsigned char, 3>{0, 20, 130};
+}
+
+// --- one view of the scene in a panel of the picture
+
+struct View
+{
+  V3 direction, right, up, centre;
+  double scale = 1.;
+  int x0 = 0, y0 = 0, size = 0;  // the panel
+
+  V3 project(const V3& p) const
+  {
+    const V3 q = p - centre;
+    return V3{x0 + 0.5 * size + scale * dot(q, right), y0 + 0.5 * size - scale * dot(q, up), dot(q, direction) * scale};
+  }
+};
+
+// A view along `direction` framing the points tightly in the panel at (x0, y0).
+inline View make_view(const std::vector<V3>& points, V3 direction, int x0, int y0, int size)
+{
+  View v;
+  v.direction = unit(direction);
   V3 up0 = {0, 1, 0};
-  if(std::abs(dot(up0, view)) > 0.95) up0 = {0, 0, 1};
-  const V3 right = unit(cross(up0, view));
-  const V3 up = cross(view, right);
-  const double scale = 0.48 * (std::min)(width, height) / radius;
-  auto project = [&](const V3& p) {
-    const V3 q = p - center;
-    return V3{0.5 * width + scale * dot(q, right), 0.5 * height - scale * dot(q, up), dot(q, view) * scale};
-  };
+  if(std::abs(dot(up0, v.direction)) > 0.95) up0 = {0, 0, 1};
+  v.right = unit(cross(up0, v.direction));
+  v.up = cross(v.direction, v.right);
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  for(const V3& p : points)
+  {
+    const double c[2] = {dot(p, v.right), dot(p, v.up)};
+    for(int k = 0; k < 2; ++k) { lo[k] = (std::min)(lo[k], c[k]); hi[k] = (std::max)(hi[k], c[k]); }
+  }
+  const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], 1e-300});
+  v.scale = 0.94 * size / extent;
+  // the centre: the middle of the projected extent, at the points' mean depth
+  V3 mean = {0, 0, 0};
+  for(const V3& p : points) mean = mean + (1. / points.size()) * p;
+  v.centre = (0.5 * (lo[0] + hi[0])) * v.right + (0.5 * (lo[1] + hi[1])) * v.up + dot(mean, v.direction) * v.direction;
+  v.x0 = x0;
+  v.y0 = y0;
+  v.size = size;
+  return v;
+}
 
-  Canvas canvas(width, height);
-  std::vector<V3> screen(s.points.size());
-  for(std::size_t i = 0; i < s.points.size(); ++i) screen[i] = project(s.points[i]);
-
-  // Vertex normals for rotating the directions; mean edge length for their size.
-  std::vector<V3> normals(s.points.size(), V3{0, 0, 0});
-  double edge_sum = 0.;
-  const V3 light = unit(view + V3{0.2, 0.5, 0.1});
+// The shaded triangles of one view (singular faces in their index colour).
+inline void draw_surface(const Scene& s, const View& view, const std::vector<V3>& screen, Canvas& canvas)
+{
+  const V3 light = unit(view.direction + 0.2 * view.right + 0.5 * view.up);
   for(std::size_t f = 0; f < s.triangles.size(); ++f)
   {
     const auto& t = s.triangles[f];
-    const V3 n = cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]);
-    for(int c = 0; c < 3; ++c) normals[t[c]] = normals[t[c]] + n;
-    for(int c = 0; c < 3; ++c) edge_sum += norm(s.points[t[(c + 1) % 3]] - s.points[t[c]]);
-    const V3 nu = unit(n);
+    const V3 nu = unit(cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]));
     const double shade = 0.35 + 0.65 * std::abs(dot(nu, light));
     std::array<unsigned char, 3> col = {static_cast<unsigned char>(205 * shade), static_cast<unsigned char>(210 * shade),
                                         static_cast<unsigned char>(220 * shade)};
     const int k = f < s.face_index.size() ? s.face_index[f] : 0;
-    if(k > 0) col = {230, 40, 40};
-    if(k < 0) col = {40, 80, 230};
+    if(k != 0) col = index_colour(k);
     canvas.triangle(screen[t[0]], screen[t[1]], screen[t[2]], col);
   }
-  const double mean_edge = edge_sum / (3. * s.triangles.size());
+}
 
-  // One glyph per screen cell of `cell` pixels, at the vertex closest to the
-  // camera in that cell, if visible.
-  const int cell = 14;
-  const int gw = width / cell + 1, gh = height / cell + 1;
-  std::vector<long> chosen(static_cast<std::size_t>(gw * gh), -1);
-  for(std::size_t i = 0; i < s.points.size(); ++i)
+// The n directions at vertices spread over the view (one per screen cell,
+// the visible vertex closest to the camera).
+inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>& screen, double mean_edge,
+                        const std::vector<V3>& normals, Canvas& canvas)
+{
+  const int cell = 12;
+  const int cells = view.size / cell + 1;
+  std::vector<long> chosen(static_cast<std::size_t>(cells * cells), -1);
+  for(std::size_t i = 0; i < s.points.size() && i < s.directions.size(); ++i)
   {
     const V3& p = screen[i];
-    if(p[0] < 0 || p[1] < 0 || p[0] >= width || p[1] >= height) continue;
-    if(i >= s.directions.size() || dot(s.directions[i], s.directions[i]) == 0.) continue;
-    const int x = static_cast<int>(p[0]), y = static_cast<int>(p[1]);
-    if(p[2] + 2. < canvas.depth[y * width + x]) continue;  // hidden
-    long& c = chosen[(y / cell) * gw + x / cell];
+    const int x = static_cast<int>(p[0]) - view.x0, y = static_cast<int>(p[1]) - view.y0;
+    if(x < 0 || y < 0 || x >= view.size || y >= view.size || dot(s.directions[i], s.directions[i]) == 0.) continue;
+    if(p[2] + 2. < canvas.depth[static_cast<std::size_t>((y + view.y0) * canvas.w + x + view.x0)]) continue;  // hidden
+    long& c = chosen[static_cast<std::size_t>((y / cell) * cells + x / cell)];
     if(c < 0 || screen[static_cast<std::size_t>(c)][2] < p[2]) c = static_cast<long>(i);
   }
-  const double glyph = (std::min)(0.45 * cell / scale, 1.5 * mean_edge);
-  const double pi = 3.14159265358979323846;
-  for(const auto& polyline : s.polylines)
-    for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
-      canvas.line(project(polyline[i]), project(polyline[i + 1]), {20, 60, 70}, 3.);
+  const double glyph = (std::min)(0.42 * cell / view.scale, 1.5 * mean_edge);
   for(long ci : chosen)
   {
-    if(ci < 0 || !s.polylines.empty()) continue;
+    if(ci < 0) continue;
     const std::size_t i = static_cast<std::size_t>(ci);
-    const V3 n = unit(normals[i]);
-    const V3 d = s.directions[i];
-    const V3 e = cross(n, d);
+    const V3 d = s.directions[i], e = cross(unit(normals[i]), d);
     for(int k = 0; k < s.degree; ++k)
     {
-      const double a = 2. * pi * k / s.degree;
+      const double a = 2. * 3.14159265358979323846 * k / s.degree;
       const V3 dk = std::cos(a) * d + std::sin(a) * e;
-      const V3 tip = s.points[i] + glyph * dk;
-      // a vector field (n = 1) gets a two-sided stroke with a dark head
-      canvas.line(screen[i], project(tip), {20, 20, 20}, 3.);
-      if(s.degree == 1)
-        canvas.line(screen[i], project(s.points[i] + (-0.6 * glyph) * dk), {110, 110, 110}, 3.);
+      canvas.line(screen[i], view.project(s.points[i] + glyph * dk), {20, 20, 20}, 3.);
+      if(s.degree == 1)  // a vector field: a two-sided stroke with a dark head
+        canvas.line(screen[i], view.project(s.points[i] + (-0.6 * glyph) * dk), {110, 110, 110}, 3.);
     }
   }
-  // Mark singular faces so that they are seen even when smaller than a pixel.
+}
+
+// One panel: the surface, the field (lines or glyphs), the singular faces
+// marked by discs so that they are seen even when smaller than a pixel.
+inline void draw_view(const Scene& s, const View& view, double mean_edge, const std::vector<V3>& normals, Canvas& canvas)
+{
+  std::vector<V3> screen(s.points.size());
+  for(std::size_t i = 0; i < s.points.size(); ++i) screen[i] = view.project(s.points[i]);
+  draw_surface(s, view, screen, canvas);
+  for(const auto& polyline : s.polylines)
+    for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+      canvas.line(view.project(polyline[i]), view.project(polyline[i + 1]), {20, 60, 70}, 3.);
+  if(s.polylines.empty()) draw_glyphs(s, view, screen, mean_edge, normals, canvas);
   for(std::size_t f = 0; f < s.triangles.size() && f < s.face_index.size(); ++f)
   {
     if(s.face_index[f] == 0) continue;
     const auto& t = s.triangles[f];
     const V3 c = (1. / 3.) * (screen[t[0]] + screen[t[1]] + screen[t[2]]);
     const int x = static_cast<int>(c[0]), y = static_cast<int>(c[1]);
-    if(x < 0 || y < 0 || x >= width || y >= height || c[2] + 2. < canvas.depth[y * width + x]) continue;
-    canvas.disc(c, 6., s.face_index[f] > 0 ? std::array<unsigned char, 3>{220, 30, 30}
-                                           : std::array<unsigned char, 3>{30, 70, 220});
+    if(x < view.x0 || y < view.y0 || x >= view.x0 + view.size || y >= view.y0 + view.size) continue;
+    if(c[2] + 2. < canvas.depth[static_cast<std::size_t>(y * canvas.w + x)]) continue;
+    canvas.disc(c, 5., index_colour(s.face_index[f]));
   }
-  return write_png(path, width, height, canvas.rgb);
+}
+
+// The legend band: n, and each index present with its colour and count.
+inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
+{
+  const std::array<unsigned char, 3> ink = {30, 30, 30};
+  text(canvas, 20, y0 + 18, "n = " + std::to_string(s.degree), 3, ink);
+  std::map<int, std::size_t> count;
+  for(int k : s.face_index)
+    if(k != 0) ++count[k];
+  int x = 220;
+  text(canvas, x, y0 + 18, "index:", 3, ink);
+  x += 7 * 18;
+  for(auto it = count.rbegin(); it != count.rend() && x < canvas.w - 200; ++it)
+  {
+    canvas.disc(V3{x + 10., y0 + 28., 0.}, 10., index_colour(it->first));
+    const std::string label = (it->first > 0 ? "+" : "") + std::to_string(it->first) + "/" + std::to_string(s.degree) +
+                              " x" + std::to_string(it->second);
+    text(canvas, x + 28, y0 + 18, label, 3, ink);
+    x += 28 + 18 * static_cast<int>(label.size()) + 30;
+  }
+}
+
+// Renders the scene from four directions (the vertices of a tetrahedron, the
+// first one a three-quarter view): every face turned to the outside is seen
+// from less than 71 degrees in one of them. A legend below. Writes a PNG.
+inline bool render(const Scene& s, std::ostream& os, int panel = 560)
+{
+  if(s.points.empty() || s.triangles.empty()) return false;
+  // the tetrahedron's directions, rotated so that the first is the front view
+  const V3 front = unit(V3{0.55, 0.35, 0.76}), a = unit(V3{1, 1, 1});
+  const V3 axis = cross(a, front);
+  const double sin_angle = norm(axis), cos_angle = dot(a, front);
+  auto rotate = [&](const V3& v) {  // Rodrigues: the rotation taking a to front
+    if(sin_angle < 1e-12) return v;
+    const V3 k = (1. / sin_angle) * axis;
+    return cos_angle * v + sin_angle * cross(k, v) + ((1. - cos_angle) * dot(k, v)) * k;
+  };
+  const V3 directions[4] = {front, rotate(unit(V3{1, -1, -1})), rotate(unit(V3{-1, 1, -1})), rotate(unit(V3{-1, -1, 1}))};
+  std::vector<V3> normals(s.points.size(), V3{0, 0, 0});
+  double edge_sum = 0.;
+  for(const auto& t : s.triangles)
+  {
+    const V3 n = cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]);
+    for(int c = 0; c < 3; ++c) normals[t[c]] = normals[t[c]] + n;
+    for(int c = 0; c < 3; ++c) edge_sum += norm(s.points[t[(c + 1) % 3]] - s.points[t[c]]);
+  }
+  const double mean_edge = edge_sum / (3. * s.triangles.size());
+  const int legend = 70;
+  Canvas canvas(2 * panel, 2 * panel + legend);
+  for(int v = 0; v < 4; ++v)
+    draw_view(s, make_view(s.points, directions[v], (v % 2) * panel, (v / 2) * panel, panel), mean_edge, normals, canvas);
+  for(int x = 0; x < 2 * panel; ++x) canvas.set(x, panel, {170, 170, 170});  // the panels' borders
+  for(int y = 0; y < 2 * panel; ++y) canvas.set(panel, y, {170, 170, 170});
+  draw_legend(s, 2 * panel, canvas);
+  return write_png(os, canvas.w, canvas.h, canvas.rgb);
 }
 
 } // namespace png_snapshot

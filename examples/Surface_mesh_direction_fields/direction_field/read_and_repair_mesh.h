@@ -1,6 +1,7 @@
-// Reading a mesh file as the command-line program does: as a polygon soup,
-// repaired into a triangle mesh whose vertices and faces keep track of the
-// file's, so that the outputs can be written in the file's order.
+// Reading a mesh file as the command-line program does: as a polygon soup
+// (read_polygon_soup.h), repaired into a triangle mesh whose vertices and
+// faces keep track of the file's, so that the outputs can be written in the
+// file's order.
 //
 // Repairs, each counted in a Repair_report:
 //  1. points with identical coordinates are merged (the first one is kept);
@@ -13,27 +14,28 @@
 //     duplicated, by CGAL::Polygon_mesh_processing::orient_polygon_soup();
 //  6. a triangle that still cannot be added to the mesh is skipped.
 // A vertex of the file is represented by the mesh vertex of its first copy.
+// Steps 1, 2 and 4 are sorts; step 5 runs only when the triangles are not
+// already an oriented manifold mesh (no directed edge twice, every vertex one
+// fan), so that a clean file goes straight to the mesh.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
 
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "read_polygon_soup.h"
+
 #include <algorithm>
+#include <numeric>
 #include <array>
-#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <map>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-struct Mesh_input_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
 struct Repair_report
 {
@@ -112,186 +114,266 @@ struct Counting_visitor : public CGAL::Polygon_mesh_processing::Default_orientat
   void duplicated_vertex(std::size_t original, std::size_t copy) { ++*duplicated; copies->emplace_back(original, copy); }
 };
 
-// A pre-scan of ASCII OFF files: CGAL's reader trusts the vertex count of
-// each face line, so a corrupted count (say 999999999) makes it allocate
-// gigabytes before failing. Reject such a line first; everything else is left
-// to CGAL's reader.
-inline void check_off_face_sizes(const std::string& path)
-{
-  std::ifstream in(path);
-  std::string line;
-  auto next_data_line = [&](std::istringstream& fields) {
-    while(std::getline(in, line))
-    {
-      const std::size_t hash = line.find('#');
-      if(hash != std::string::npos) line.erase(hash);
-      if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
-      fields.clear();
-      fields.str(line);
-      return true;
-    }
-    return false;
-  };
-  std::istringstream fields;
-  if(!next_data_line(fields)) return;
-  std::string keyword;
-  fields >> keyword;
-  if(keyword.find("OFF") == std::string::npos || line.find("BINARY") != std::string::npos) return;
-  long long nv = -1, nf = -1;
-  if(!(fields >> nv >> nf))  // counts on the next line
-  {
-    if(!next_data_line(fields) || !(fields >> nv >> nf)) return;
-  }
-  if(nv < 0 || nf < 0) return;
-  for(long long i = 0; i < nv; ++i)
-    if(!next_data_line(fields)) return;
-  for(long long f = 0; f < nf; ++f)
-  {
-    if(!next_data_line(fields)) return;
-    long long k = 0;
-    if((fields >> k) && (k < 0 || k > (std::max)(nv, 3LL)))
-      throw Mesh_input_error("face " + std::to_string(f) + " claims " + std::to_string(k) + " vertices, the file has " +
-                             std::to_string(nv));
-  }
-}
-
 } // namespace read_and_repair_internal
+
 
 namespace read_and_repair_internal {
 
-// The file as a polygon soup, checked: finite coordinates, valid indices, a face.
-template <typename Point>
-void read_soup(const std::string& path, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+// Step 1: the first point with the same coordinates, for every point (a sort,
+// ties broken by index, so that the first copy leads each run).
+inline std::vector<std::size_t> first_copies(const std::vector<P3>& points, Repair_report& report)
 {
-  {
-    std::ifstream probe(path);
-    if(!probe) throw Mesh_input_error("cannot open '" + path + "'");
-  }
-  std::string extension = path.substr(path.find_last_of('.') + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-  if(path.find('.') != std::string::npos && extension == "off")
-    check_off_face_sizes(path);
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    throw Mesh_input_error("cannot read '" + path + "' as a mesh (OFF, OBJ, PLY or STL)");
-  if(polygons.empty()) throw Mesh_input_error("'" + path + "' holds no face");
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(!std::isfinite(CGAL::to_double(points[i].x())) || !std::isfinite(CGAL::to_double(points[i].y())) ||
-       !std::isfinite(CGAL::to_double(points[i].z())))
-      throw Mesh_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t v : polygons[f])
-      if(v >= points.size())
-        throw Mesh_input_error("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                               ", which does not exist");
-}
-
-// Step 1: the first point with the same coordinates, for every point.
-template <typename Point>
-std::vector<std::size_t> first_copies(const std::vector<Point>& points, Repair_report& report)
-{
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a] < points[b] || (!(points[b] < points[a]) && a < b);
+  });
   std::vector<std::size_t> first_copy(points.size());
-  std::map<std::array<double, 3>, std::size_t> seen;
-  for(std::size_t i = 0; i < points.size(); ++i)
+  for(std::size_t i = 0; i < order.size(); ++i)
   {
-    const P3 key = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())};
-    auto it = seen.emplace(key, i).first;
-    first_copy[i] = it->second;
-    if(it->second != i) ++report.merged_points;
+    const bool repeated = i > 0 && !(points[order[i - 1]] < points[order[i]]);
+    first_copy[order[i]] = repeated ? first_copy[order[i - 1]] : order[i];
+    if(repeated) ++report.merged_points;
   }
   return first_copy;
 }
 
-// Steps 2-4: each polygon without repeated vertices, triangulated, without
-// repeated triangles; the polygon of each triangle.
-template <typename Point>
-void clean_and_triangulate(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons,
-                           const std::vector<std::size_t>& first_copy, std::vector<std::vector<std::size_t> >& triangles,
-                           std::vector<std::size_t>& polygon_of_triangle, Repair_report& report)
+// The polygon of the soup on merged points, without repeated consecutive vertices.
+inline std::vector<std::size_t> merged_polygon(const Polygon_soup& soup, std::size_t f,
+                                               const std::vector<std::size_t>& first_copy)
 {
-  std::set<std::array<std::size_t, 3> > triangle_set;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
+  std::vector<std::size_t> poly;
+  for(const std::size_t* v = soup.begin(f); v != soup.end(f); ++v)
   {
-    std::vector<std::size_t> poly;
-    for(std::size_t v : polygons[f])
+    const std::size_t w = first_copy[*v];
+    if(poly.empty() || poly.back() != w) poly.push_back(w);
+  }
+  while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+  return poly;
+}
+
+typedef std::array<std::size_t, 3> Triangle;
+
+// Steps 2-3: every polygon as triangles (with its polygon), degenerate ones dropped.
+inline void triangulate_soup(const Polygon_soup& soup, const std::vector<std::size_t>& first_copy,
+                             std::vector<Triangle>& triangles, std::vector<std::size_t>& polygon_of_triangle,
+                             Repair_report& report)
+{
+  triangles.reserve(soup.number_of_polygons());
+  polygon_of_triangle.reserve(soup.number_of_polygons());
+  for(std::size_t f = 0; f < soup.number_of_polygons(); ++f)
+  {
+    if(soup.size(f) == 3)  // the common case, without a polygon of its own
     {
-      const std::size_t w = first_copy[v];
-      if(poly.empty() || poly.back() != w) poly.push_back(w);
+      const std::size_t* c = soup.begin(f);
+      const Triangle tri = {first_copy[c[0]], first_copy[c[1]], first_copy[c[2]]};
+      if(tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0])
+      {
+        triangles.push_back(tri);
+        polygon_of_triangle.push_back(f);
+        continue;
+      }
     }
-    while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+    const std::vector<std::size_t> poly = merged_polygon(soup, f, first_copy);
     if(poly.size() < 3) { ++report.degenerate_polygons; continue; }
-    std::vector<std::array<std::size_t, 3> > local;
-    if(poly.size() == 3) local.push_back({0, 1, 2});
-    else
+    std::vector<Triangle> local(1, Triangle{0, 1, 2});
+    if(poly.size() > 3)
     {
-      std::vector<Point> corners;
-      for(std::size_t v : poly) corners.push_back(points[v]);
+      std::vector<CGAL::Simple_cartesian<double>::Point_3> corners;
+      for(std::size_t v : poly) corners.emplace_back(soup.points[v][0], soup.points[v][1], soup.points[v][2]);
       local = triangulate_polygon(corners);
       ++report.triangulated_polygons;
       report.triangles_from_polygons += local.size();
     }
-    for(const auto& t : local)
+    for(const Triangle& t : local)
     {
-      std::array<std::size_t, 3> tri = {poly[t[0]], poly[t[1]], poly[t[2]]};
+      const Triangle tri = {poly[t[0]], poly[t[1]], poly[t[2]]};
       if(tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) { ++report.degenerate_polygons; continue; }
-      std::array<std::size_t, 3> key = tri;
-      std::sort(key.begin(), key.end());
-      if(!triangle_set.insert(key).second) { ++report.repeated_triangles; continue; }
-      triangles.push_back({tri[0], tri[1], tri[2]});
+      triangles.push_back(tri);
       polygon_of_triangle.push_back(f);
     }
   }
 }
 
+// Items grouped by a vertex (a counting sort, linear in their number): the
+// items of vertex v are item[first[v]] ... item[first[v + 1] - 1], in the
+// order they were given.
+template <typename Item>
+struct Vertex_buckets
+{
+  std::vector<std::size_t> first;
+  std::vector<Item> item;
+
+  template <typename ForEach>  // for_each(add) calls add(vertex, item) for every item, twice in the same order
+  Vertex_buckets(std::size_t vertices, const ForEach& for_each)
+    : first(vertices + 2, 0)
+  {
+    for_each([&](std::size_t v, const Item&) { ++first[v + 2]; });
+    for(std::size_t v = 2; v < first.size(); ++v) first[v] += first[v - 1];
+    item.resize(first.back());
+    for_each([&](std::size_t v, const Item& i) { item[first[v + 1]++] = i; });
+    first.pop_back();
+  }
+  // Calls f(begin, end) on the items of each vertex, sorted.
+  template <typename F>
+  void for_each_sorted(const F& f)
+  {
+    for(std::size_t v = 0; v + 1 < first.size(); ++v)
+    {
+      const auto begin = item.begin() + static_cast<std::ptrdiff_t>(first[v]);
+      const auto end = item.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
+      std::sort(begin, end);
+      f(begin, end);
+    }
+  }
+};
+
+// Step 4: the triangles with the same three vertices as an earlier one,
+// dropped (grouped by their smallest vertex).
+inline void remove_repeated_triangles(std::size_t points, std::vector<Triangle>& triangles,
+                                      std::vector<std::size_t>& polygon_of_triangle, Repair_report& report)
+{
+  typedef std::pair<std::pair<std::size_t, std::size_t>, std::size_t> Key;  // the other two vertices, the triangle
+  Vertex_buckets<Key> buckets(points, [&](const auto& add) {
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      Triangle k = triangles[t];
+      std::sort(k.begin(), k.end());
+      add(k[0], Key({k[1], k[2]}, t));
+    }
+  });
+  std::vector<char> repeated(triangles.size(), 0);
+  buckets.for_each_sorted([&](auto begin, auto end) {
+    for(auto it = begin; it != end && it + 1 != end; ++it)
+      if((it + 1)->first == it->first) repeated[(it + 1)->second] = 1;
+  });
+  std::size_t kept = 0;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if(repeated[t]) { ++report.repeated_triangles; continue; }
+    triangles[kept] = triangles[t];
+    polygon_of_triangle[kept++] = polygon_of_triangle[t];
+  }
+  triangles.resize(kept);
+  polygon_of_triangle.resize(kept);
+}
+
+// No directed edge twice: the triangles are consistently oriented and every
+// edge has at most two of them (a necessary condition for the mesh to be
+// built as it is; the fans of the vertices are checked on the mesh).
+inline bool directed_edges_are_unique(std::size_t points, const std::vector<Triangle>& triangles)
+{
+  Vertex_buckets<std::size_t> targets(points, [&](const auto& add) {
+    for(const Triangle& t : triangles)
+      for(int i = 0; i < 3; ++i) add(t[i], t[(i + 1) % 3]);
+  });
+  bool unique = true;
+  targets.for_each_sorted([&](auto begin, auto end) { unique = unique && std::adjacent_find(begin, end) == end; });
+  return unique;
+}
+
+// The mesh with vertex i = point i; the triangles it could not add are counted.
+template <typename Mesh>
+std::vector<std::size_t> add_triangles(const std::vector<P3>& points, const std::vector<Triangle>& triangles,
+                                       Mesh& mesh, std::size_t& skipped)
+{
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::size_type size_type;
+  std::vector<std::size_t> added;  // the triangles that are faces, in order
+  mesh.reserve(static_cast<size_type>(points.size()), static_cast<size_type>(3 * triangles.size() / 2 + 3),
+               static_cast<size_type>(triangles.size()));
+  for(const P3& p : points) mesh.add_vertex(typename Mesh::Point(p[0], p[1], p[2]));
+  added.reserve(triangles.size());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tri = triangles[t];
+    if(mesh.add_face(Vertex_index(static_cast<size_type>(tri[0])), Vertex_index(static_cast<size_type>(tri[1])),
+                     Vertex_index(static_cast<size_type>(tri[2]))) == Mesh::null_face())
+      ++skipped;
+    else
+      added.push_back(t);
+  }
+  return added;
+}
+
+// Step 5 when needed: orientation and non-manifold vertices by CGAL (new
+// points are appended); the copies made, as (original point, new point).
+inline std::vector<std::pair<std::size_t, std::size_t> > orient(std::vector<P3>& points, std::vector<Triangle>& triangles,
+                                                                 Repair_report& report)
+{
+  typedef CGAL::Simple_cartesian<double>::Point_3 Point_3;
+  std::vector<Point_3> cgal_points;
+  cgal_points.reserve(points.size());
+  for(const P3& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::vector<std::size_t> > polygons;
+  polygons.reserve(triangles.size());
+  for(const Triangle& t : triangles) polygons.push_back({t[0], t[1], t[2]});
+  Counting_visitor visitor;
+  visitor.reversed = &report.reoriented_triangles;
+  visitor.duplicated = &report.duplicated_vertices;
+  std::vector<std::pair<std::size_t, std::size_t> > copies;
+  visitor.copies = &copies;
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(cgal_points, polygons, CGAL::parameters::visitor(visitor));
+  for(std::size_t i = points.size(); i < cgal_points.size(); ++i)
+    points.push_back({cgal_points[i].x(), cgal_points[i].y(), cgal_points[i].z()});
+  for(std::size_t t = 0; t < triangles.size(); ++t) triangles[t] = {polygons[t][0], polygons[t][1], polygons[t][2]};
+  return copies;
+}
+
 } // namespace read_and_repair_internal
+
+// The soup as a mesh, repaired as the steps above say. Throws Mesh_input_error
+// when no usable face is left.
+template <typename Mesh>
+Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path)
+{
+  typedef typename Mesh::Vertex_index Vertex_index;
+  namespace repair = read_and_repair_internal;
+  Repaired_mesh<Mesh> out;
+  out.file_vertices = soup.points.size();
+  out.file_faces = soup.number_of_polygons();
+  const std::vector<std::size_t> first_copy = repair::first_copies(soup.points, out.report);
+  std::vector<repair::Triangle> triangles;
+  std::vector<std::size_t> polygon_of_triangle;
+  repair::triangulate_soup(soup, first_copy, triangles, polygon_of_triangle, out.report);
+  repair::remove_repeated_triangles(soup.points.size(), triangles, polygon_of_triangle, out.report);
+  if(triangles.empty()) throw Mesh_input_error("'" + path + "' holds no usable face");
+
+  std::vector<std::pair<std::size_t, std::size_t> > copies;
+  std::size_t skipped = 0;
+  std::vector<std::size_t> added;
+  if(repair::directed_edges_are_unique(soup.points.size(), triangles))
+  {
+    added = repair::add_triangles(soup.points, triangles, out.mesh, skipped);
+    std::vector<typename Mesh::Halfedge_index> pinched;
+    if(skipped == 0) CGAL::Polygon_mesh_processing::non_manifold_vertices(out.mesh, std::back_inserter(pinched));
+    if(skipped > 0 || !pinched.empty()) { out.mesh.clear(); skipped = 0; added.clear(); }
+  }
+  if(out.mesh.number_of_faces() == 0)
+  {
+    copies = repair::orient(soup.points, triangles, out.report);
+    added = repair::add_triangles(soup.points, triangles, out.mesh, skipped);
+  }
+  out.report.skipped_triangles = skipped;
+  if(out.mesh.number_of_faces() == 0) throw Mesh_input_error("'" + path + "' holds no usable face");
+  for(std::size_t t : added) out.file_face_of_face.push_back(polygon_of_triangle[t]);
+  out.file_vertex_of_vertex.resize(soup.points.size());
+  std::iota(out.file_vertex_of_vertex.begin(), out.file_vertex_of_vertex.end(), std::size_t(0));
+  for(const auto& oc : copies)  // a copy represents what its original represents
+    if(oc.second < soup.points.size()) out.file_vertex_of_vertex[oc.second] = out.file_vertex_of_vertex[oc.first];
+  out.vertex_of_file_vertex.resize(out.file_vertices);
+  for(std::size_t i = 0; i < out.file_vertices; ++i)
+    out.vertex_of_file_vertex[i] = Vertex_index(static_cast<typename Mesh::size_type>(first_copy[i]));
+  return out;
+}
 
 // Throws Mesh_input_error with a one-line message when the file cannot be used.
 template <typename Mesh>
 Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
 {
-  typedef typename Mesh::Point Point;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename Mesh::Face_index Face_index;
-  namespace repair = read_and_repair_internal;
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  repair::read_soup(path, points, polygons);
-  Repaired_mesh<Mesh> out;
-  out.file_vertices = points.size();
-  out.file_faces = polygons.size();
-  const std::vector<std::size_t> first_copy = repair::first_copies(points, out.report);
-  std::vector<std::vector<std::size_t> > triangles;
-  std::vector<std::size_t> polygon_of_triangle;
-  repair::clean_and_triangulate(points, polygons, first_copy, triangles, polygon_of_triangle, out.report);
-  if(triangles.empty()) throw Mesh_input_error("'" + path + "' holds no usable face");
-
-  // 5. orientation and non-manifold vertices (new points are appended)
-  repair::Counting_visitor visitor;
-  visitor.reversed = &out.report.reoriented_triangles;
-  visitor.duplicated = &out.report.duplicated_vertices;
-  std::vector<std::pair<std::size_t, std::size_t> > copies;
-  visitor.copies = &copies;
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles, CGAL::parameters::visitor(visitor));
-
-  // 6. the mesh, vertex i being point i
-  for(const Point& p : points) out.mesh.add_vertex(p);
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    const auto& tri = triangles[t];
-    const Face_index f = out.mesh.add_face(Vertex_index(static_cast<typename Mesh::size_type>(tri[0])),
-                                           Vertex_index(static_cast<typename Mesh::size_type>(tri[1])),
-                                           Vertex_index(static_cast<typename Mesh::size_type>(tri[2])));
-    if(f == Mesh::null_face()) { ++out.report.skipped_triangles; continue; }
-    out.file_face_of_face.push_back(polygon_of_triangle[t]);
-  }
-  if(out.mesh.number_of_faces() == 0) throw Mesh_input_error("'" + path + "' holds no usable face");
-  out.file_vertex_of_vertex.resize(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i) out.file_vertex_of_vertex[i] = i;  // copies are fixed below
-  for(const auto& oc : copies)
-    if(oc.second < points.size()) out.file_vertex_of_vertex[oc.second] = out.file_vertex_of_vertex[oc.first];
-  out.vertex_of_file_vertex.resize(out.file_vertices);
-  for(std::size_t i = 0; i < out.file_vertices; ++i)
-    out.vertex_of_file_vertex[i] = Vertex_index(static_cast<typename Mesh::size_type>(first_copy[i]));
-  return out;
+  Polygon_soup soup = read_polygon_soup(path);
+  if(soup.number_of_polygons() == 0) throw Mesh_input_error("'" + path + "' holds no face");
+  return repair_into_mesh<Mesh>(soup, path);
 }
 
 #endif

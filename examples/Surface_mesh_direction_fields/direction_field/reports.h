@@ -5,6 +5,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_REPORTS_H
 
 #include "command_line_options.h"
+#include "progress.h"
 #include "read_and_repair_mesh.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
@@ -48,7 +49,8 @@ inline const SMDF::Component_report& main_component(const SMDF::Direction_field_
 }
 
 template <typename Mesh>
-void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
+void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
+                const Program_timings& timings)
 {
   const Mesh& mesh = input.mesh;
   const Repair_report& rep = input.report;
@@ -80,11 +82,14 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"vertices_duplicated\":" << rep.duplicated_vertices << ",\"faces_skipped\":" << rep.skipped_triangles << "}"
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms)
-     << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms) << "}}\n";
+     << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms)
+     << ",\"read\":" << number(timings.read) << ",\"repair\":" << number(timings.repair)
+     << ",\"write\":" << number(timings.write) << "},\"io_ms\":" << number(timings.io()) << "}\n";
 }
 
 template <typename Mesh>
-void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r)
+void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
+                   const Program_timings& timings)
 {
   const Mesh& mesh = input.mesh;
   int chi = 0;
@@ -94,7 +99,13 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
      << r.components.size() << " component(s), Euler characteristic " << chi << "\n"
      << "field           degree n = " << r.degree << ", s = " << r.smoothness_parameter << "\n";
   if(input.report.any())
+  {
     os << "repairs         " << input.report.summary() << "\n";
+    if(o.mesh_out.empty() && !(o.vtk + o.ply + o.rosy + o.ffield + o.singularity_list + o.streamlines).empty())
+      os << "note            the exchange files describe the repaired mesh: --mesh-out FILE writes it\n";
+    else if(!o.mesh_out.empty())
+      os << "repaired mesh   " << o.mesh_out << " (the mesh the exchange files describe)\n";
+  }
   if(main_component(r).alignment_weight > 0. || main_component(r).lambda != 0.)
   {
     os << "alignment       lambda_t = " << main_component(r).lambda;
@@ -118,7 +129,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
      << " (n * chi = " << r.degree * chi << " on a closed mesh)\n"
      << "time            " << std::fixed << std::setprecision(1) << r.timings.total_ms << " ms (setup "
      << r.timings.setup_ms << ", factorization " << r.timings.factorization_ms << ", solve " << r.timings.solve_ms
-     << ")\n";
+     << "); files " << timings.io() << " ms (read " << timings.read << ", repair " << timings.repair << ", write "
+     << timings.write << ")\n";
 }
 
 #endif

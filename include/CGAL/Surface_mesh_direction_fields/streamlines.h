@@ -42,6 +42,12 @@ struct Streamline_options
   double seed_spacing = 0.04;
   /// the largest length of each half of a streamline (from its seed)
   double maximum_length = 0.08;
+  /// the least distance between lines of the same direction family: a line
+  /// stops (and a seed is skipped) closer than this to a line traced before
+  /// it whose direction is within 30 degrees of its own, so that lines are
+  /// evenly spaced instead of bunching where the field converges. 0 (the
+  /// default): no limit.
+  double minimum_separation = 0.;
 };
 
 /*!
@@ -58,7 +64,8 @@ struct Streamline
     SINGULARITY,  ///< the next face is singular: it stops on that face's edge
     LENGTH,       ///< `maximum_length` was reached
     TURNED_BACK,  ///< the field of the next face points back across the edge (a sink or source line): it stops on that edge
-    DEGENERATE    ///< no exit could be found in a face (a degenerate face)
+    DEGENERATE,   ///< no exit could be found in a face (a degenerate face)
+    TOO_CLOSE     ///< it came closer than `minimum_separation` to an earlier line of the same family
   };
   /// the points; consecutive points lie on the same face, `faces[i]` holds the segment from `points[i]` to `points[i+1]`
   std::vector<std::array<double, 3> > points;
@@ -95,6 +102,60 @@ inline std::vector<std::pair<std::size_t, int> > edge_neighbours(const Direction
   return result;
 }
 
+// The points of the lines traced so far, with their unit tangents, in a hash
+// grid of cells of the separation distance: is a new point too close to a
+// line of the same family (a tangent within 30 degrees, either way)?
+class Line_separation
+{
+  double m_distance;
+  std::unordered_map<long long, std::vector<std::pair<Vec3, Vec3> > > m_cells;
+
+  long long key(long long i, long long j, long long k) const { return (i * 2097152LL + j) * 2097152LL + k; }
+  long long cell(double x) const { return static_cast<long long>(std::floor(x / m_distance)); }
+
+public:
+  explicit Line_separation(double distance) : m_distance(distance) {}
+  bool active() const { return m_distance > 0.; }
+
+  bool too_close(const Vec3& p, const Vec3& tangent) const
+  {
+    if(!active()) return false;
+    const long long i = cell(p[0]), j = cell(p[1]), k = cell(p[2]);
+    for(long long a = i - 1; a <= i + 1; ++a)
+      for(long long b = j - 1; b <= j + 1; ++b)
+        for(long long c = k - 1; c <= k + 1; ++c)
+        {
+          const auto it = m_cells.find(key(a, b, c));
+          if(it == m_cells.end()) continue;
+          for(const auto& sample : it->second)
+          {
+            const Vec3 d = sample.first - p;
+            if(dot(d, d) < m_distance * m_distance && std::abs(dot(sample.second, tangent)) > 0.866) return true;
+          }
+        }
+    return false;
+  }
+
+  // Samples every half distance along the polyline.
+  void add(const std::vector<Vec3>& points)
+  {
+    if(!active()) return;
+    for(std::size_t i = 0; i + 1 < points.size(); ++i)
+    {
+      const Vec3 e = points[i + 1] - points[i];
+      const double length = norm(e);
+      if(!(length > 0.)) continue;
+      const Vec3 tangent = (1. / length) * e;
+      const int steps = static_cast<int>(std::ceil(2. * length / m_distance));
+      for(int s = 0; s < steps; ++s)
+      {
+        const Vec3 p = points[i] + (length * s / steps) * tangent;
+        m_cells[key(cell(p[0]), cell(p[1]), cell(p[2]))].emplace_back(p, tangent);
+      }
+    }
+  }
+};
+
 // Traces the field lines of one Direction_field_data (see trace_streamlines()).
 class Streamline_tracer
 {
@@ -102,7 +163,7 @@ class Streamline_tracer
   const Direction_field_data& m_data;
   const int m_degree;
   Vec3 m_low, m_high;
-  double m_diagonal = 0., m_spacing = 0., m_max_length = 0.;
+  double m_diagonal = 0., m_spacing = 0., m_max_length = 0., m_separation = 0.;
   std::vector<unsigned char> m_singular;
   std::vector<std::pair<std::size_t, int> > m_neighbour;
   std::vector<Vec3> m_normal;
@@ -116,6 +177,7 @@ public:
     m_diagonal = norm(m_high - m_low);
     m_spacing = options.seed_spacing * m_diagonal;
     m_max_length = options.maximum_length * m_diagonal;
+    m_separation = options.minimum_separation * m_diagonal;
     const std::size_t nf = data.faces.size();
     m_singular.assign(nf, 0);
     for(const auto& s : data.singularities) if(s.first < nf && s.second != 0) m_singular[s.first] = 1;
@@ -132,6 +194,7 @@ public:
   {
     std::vector<Streamline> lines;
     std::unordered_map<long long, char> taken;
+    Line_separation separation(m_separation);
     const int n = m_degree;
     const int families = (n % 2 == 0) ? n / 2 : n;
     for(std::size_t f = 0; f < m_data.faces.size(); ++f)
@@ -141,8 +204,12 @@ public:
       if(!taken.emplace(cell_key(seed), 1).second) continue;
       for(int family = 0; family < families; ++family)
       {
-        Streamline line = line_through(f, seed, rotated(m_data.face_directions[f], m_normal[f], 2. * CGAL_PI * family / n));
-        if(line.points.size() >= 2) lines.push_back(std::move(line));
+        const Vec3 w = rotated(m_data.face_directions[f], m_normal[f], 2. * CGAL_PI * family / n);
+        if(separation.too_close(seed, w)) continue;
+        Streamline line = line_through(f, seed, w, separation);
+        if(line.points.size() < 2) continue;
+        separation.add(line.points);
+        lines.push_back(std::move(line));
       }
     }
     return lines;
@@ -159,7 +226,7 @@ private:
 
   // The line through the seed in face f along w: the backward half reversed,
   // the seed, the forward half.
-  Streamline line_through(std::size_t f, const Vec3& seed, const Vec3& w) const
+  Streamline line_through(std::size_t f, const Vec3& seed, const Vec3& w, const Line_separation& separation) const
   {
     const bool both_ways = (m_degree % 2 == 0) || m_degree == 1;
     Streamline line;
@@ -167,7 +234,7 @@ private:
     std::vector<std::size_t> back_faces;
     Streamline::End back_end = Streamline::End::LENGTH;
     if(both_ways)
-      back_end = trace_half(f, seed, -1. * w, back_points, back_faces);
+      back_end = trace_half(f, seed, -1. * w, back_points, back_faces, separation);
     for(std::size_t i = back_points.size(); i-- > 0;)
     {
       line.points.push_back(back_points[i]);
@@ -176,7 +243,7 @@ private:
     line.points.push_back(seed);
     std::vector<Vec3> forward_points;
     std::vector<std::size_t> forward_faces;
-    const Streamline::End forward_end = trace_half(f, seed, w, forward_points, forward_faces);
+    const Streamline::End forward_end = trace_half(f, seed, w, forward_points, forward_faces, separation);
     line.points.insert(line.points.end(), forward_points.begin(), forward_points.end());
     line.faces.insert(line.faces.end(), forward_faces.begin(), forward_faces.end());
     line.start_end = both_ways ? back_end : Streamline::End::LENGTH;  // forwards only: the seed itself
@@ -232,7 +299,7 @@ private:
 
   // One half line from point p in face f along w; appends to points/faces.
   Streamline::End trace_half(std::size_t f, Vec3 p, Vec3 w, std::vector<Vec3>& points,
-                             std::vector<std::size_t>& faces) const
+                             std::vector<std::size_t>& faces, const Line_separation& separation) const
   {
     double length = 0.;
     int entry = -1;  // the side through which the line entered f
@@ -245,6 +312,12 @@ private:
       const bool too_long = length + exit_t > m_max_length;
       const double step_length = too_long ? m_max_length - length : exit_t;
       const Vec3 q{p[0] + step_length * w[0], p[1] + step_length * w[1], p[2] + step_length * w[2]};
+      if(separation.too_close(q, w))  // ends half way to a point too close
+      {
+        points.push_back(p + (0.5 * step_length) * w);
+        faces.push_back(f);
+        return Streamline::End::TOO_CLOSE;
+      }
       points.push_back(q);
       faces.push_back(f);
       length += step_length;
@@ -282,7 +355,8 @@ and the line continues along the direction of that face closest to it (the
 edge of a singular face (it never enters one), on an edge where the next
 face's field points back (the per-face field is discontinuous there: a sink or
 source line), when it reaches
-`options.maximum_length`, or in a degenerate face. Seeds in singular faces are
+`options.maximum_length`, in a degenerate face, or when it comes closer than
+`options.minimum_separation` to a line of its family traced before it. Seeds in singular faces are
 skipped.
 
 \param data the field with its mesh (`make_direction_field_data()` fills everything needed)
@@ -295,8 +369,8 @@ inline std::vector<Streamline> trace_streamlines(const Direction_field_data& dat
   if(data.faces.empty() || data.points.empty()) return std::vector<Streamline>();
   if(data.face_directions.size() != data.faces.size())
     throw Invalid_input_error("trace_streamlines: the data has no per-face directions");
-  if(!(options.seed_spacing > 0.) || !(options.maximum_length > 0.))
-    throw Invalid_input_error("trace_streamlines: the seed spacing and the maximum length must be positive");
+  if(!(options.seed_spacing > 0.) || !(options.maximum_length > 0.) || !(options.minimum_separation >= 0.))
+    throw Invalid_input_error("trace_streamlines: the seed spacing and the maximum length must be positive, the separation not negative");
   const internal::Streamline_tracer tracer(data, options);
   if(!tracer.has_extent()) return std::vector<Streamline>();
   return tracer.trace_all();

@@ -96,6 +96,25 @@ inline int read_VTK_degree(std::istream& is)
   return degree;
 }
 
+// One array of a FIELD block: "name components tuples type", then the values.
+inline std::vector<double> read_VTK_field_array(std::istream& is, std::string& name)
+{
+  const char* kind = "VTK";
+  name = next_token(is, kind);
+  const std::size_t components = next_value<std::size_t>(is, kind), tuples = next_value<std::size_t>(is, kind);
+  next_token(is, kind);  // type
+  if(components > 64 || tuples > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible array size");
+  std::vector<double> values(components * tuples);
+  for(double& v : values) v = next_value<double>(is, kind);
+  return values;
+}
+
+inline void skip_VTK_field_array(std::istream& is)
+{
+  std::string name;
+  read_VTK_field_array(is, name);
+}
+
 struct VTK_cells
 {
   std::size_t points = 0, singularities = 0, faces = 0;
@@ -109,14 +128,22 @@ inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
   expect(is, "ASCII", kind);
   expect(is, "DATASET", kind);
   expect(is, "POLYDATA", kind);
-  expect(is, "POINTS", kind);
+  std::string word = next_token(is, kind);
+  if(word == "FIELD")  // the dataset's field data (the degree, already read from the title)
+  {
+    next_token(is, kind);
+    const std::size_t arrays = next_value<std::size_t>(is, kind);
+    for(std::size_t a = 0; a < arrays; ++a) skip_VTK_field_array(is);
+    word = next_token(is, kind);
+  }
+  if(word != "POINTS") throw Invalid_input_error("VTK file: expected POINTS");
   VTK_cells cells;
   cells.points = next_value<std::size_t>(is, kind);
   if(cells.points > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
   next_token(is, kind);  // type
   std::vector<Vec3> points(cells.points);
   for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
-  std::string word = next_token(is, kind);
+  word = next_token(is, kind);
   if(word == "VERTICES")
   {
     cells.singularities = next_value<std::size_t>(is, kind);
@@ -146,7 +173,7 @@ inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
 
 // The SCALARS block named `name` (its header read up to the name): the
 // magnitudes of the mesh's points, or the indices of the singularity cells.
-inline void read_VTK_scalars(std::istream& is, const std::string& name, const VTK_cells& cells,
+inline void read_VTK_scalars(std::istream& is, const std::string& name, const VTK_cells& cells, bool cell_data,
                              Direction_field_data& data, std::vector<double>& singularity_values)
 {
   const char* kind = "VTK";
@@ -164,13 +191,23 @@ inline void read_VTK_scalars(std::istream& is, const std::string& name, const VT
       if(v < nv) data.magnitudes[v] = m;
     }
   }
-  else if(name == "singularity_index")
+  else if(name == "singularity_index" && !cell_data)  // per point: the singularity points are last
   {
+    for(std::size_t v = 0; v < cells.points; ++v)
+    {
+      const double value = next_value<double>(is, kind);
+      if(v >= nv) singularity_values.push_back(value);
+    }
+  }
+  else if(name == "singularity_index")  // per cell (files before the point data had it): the same values
+  {
+    std::vector<double> cell_values;
     for(std::size_t c = 0; c < cells.singularities + cells.faces; ++c)
     {
       const double value = next_value<double>(is, kind);
-      if(c < cells.singularities) singularity_values.push_back(value);
+      if(c < cells.singularities) cell_values.push_back(value);
     }
+    if(singularity_values.empty()) singularity_values = cell_values;
   }
   else throw Invalid_input_error("VTK file: unexpected data " + name);
 }
@@ -186,6 +223,7 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
   data.directions.assign(nv, std::vector<Vec3>(static_cast<std::size_t>(data.degree)));
   std::vector<double> singularity_values;
   std::string word;
+  bool cell_data = false;
   while(is >> word)
   {
     if(word == "VECTORS")
@@ -202,9 +240,30 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
       }
     }
     else if(word == "SCALARS")
-      read_VTK_scalars(is, next_token(is, kind), cells, data, singularity_values);
+      read_VTK_scalars(is, next_token(is, kind), cells, cell_data, data, singularity_values);
+    else if(word == "NORMALS")  // recomputed below, as the reader of a file without them does
+    {
+      next_token(is, kind);
+      next_token(is, kind);
+      for(std::size_t i = 0; i < 3 * cells.points; ++i) next_value<double>(is, kind);
+    }
+    else if(word == "FIELD")  // the point data that is not an attribute: the magnitudes
+    {
+      next_token(is, kind);
+      const std::size_t arrays = next_value<std::size_t>(is, kind);
+      for(std::size_t a = 0; a < arrays; ++a)
+      {
+        std::string name;
+        const std::vector<double> values = read_VTK_field_array(is, name);
+        if(name == "magnitude" && !cell_data && values.size() == cells.points)
+          data.magnitudes.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(nv));
+      }
+    }
     else if(word == "CELL_DATA")
+    {
       next_value<std::size_t>(is, kind);
+      cell_data = true;
+    }
     else
       throw Invalid_input_error("VTK file: unexpected '" + word + "'");
   }
@@ -233,6 +292,77 @@ inline void match_singular_faces(const std::vector<double>& singularity_values, 
   }
 }
 
+// What the VTK files show: the vertices that belong to a face (in order),
+// then the barycentre of each singular face.
+struct VTK_layout
+{
+  std::vector<std::size_t> used;                     // the vertex of `data` of each written vertex
+  std::vector<std::array<std::size_t, 3> > faces;    // the triangles, renumbered
+
+  explicit VTK_layout(const Direction_field_data& data)
+  {
+    const std::size_t none = std::numeric_limits<std::size_t>::max();
+    std::vector<std::size_t> number(data.points.size(), none);
+    for(const auto& t : data.faces) for(std::size_t v : t) number[v] = 0;
+    for(std::size_t v = 0; v < number.size(); ++v)
+      if(number[v] != none) { number[v] = used.size(); used.push_back(v); }
+    faces.reserve(data.faces.size());
+    for(const auto& t : data.faces) faces.push_back({number[t[0]], number[t[1]], number[t[2]]});
+  }
+
+  // f(point, normal, singularity index, i) for every written point.
+  template <typename F>
+  void for_each_point(const Direction_field_data& data, const F& f) const
+  {
+    const Vec3 zero = {0., 0., 0.};
+    for(std::size_t i = 0; i < used.size(); ++i)
+      f(data.points[used[i]], data.normals.empty() ? zero : data.normals[used[i]], 0., i);
+    for(std::size_t i = 0; i < data.singularities.size(); ++i)
+    {
+      const auto& face = data.faces[data.singularities[i].first];
+      f(data.singularity_points[i], triangle_unit_normal(data.points, face),
+        static_cast<double>(data.singularities[i].second) / data.degree, used.size() + i);
+    }
+  }
+};
+
+inline void write_VTU_array_header(std::ostream& os, const char* name, int components)
+{
+  os << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"" << components
+     << "\" format=\"ascii\">\n";
+}
+
+// The point data of write_VTU().
+inline void write_VTU_point_arrays(std::ostream& os, const Direction_field_data& data, const VTK_layout& layout)
+{
+  const std::size_t ns = data.singularities.size();
+  write_VTU_array_header(os, "singularity_index", 1);
+  layout.for_each_point(data, [&](const Vec3&, const Vec3&, double index, std::size_t) { os << index << "\n"; });
+  os << "</DataArray>\n";
+  write_VTU_array_header(os, "normals", 3);
+  layout.for_each_point(data, [&](const Vec3&, const Vec3& n, double, std::size_t) {
+    os << n[0] << " " << n[1] << " " << n[2] << "\n";
+  });
+  os << "</DataArray>\n";
+  for(int k = 0; k < data.degree; ++k)
+  {
+    const std::string name = "direction_" + std::to_string(k);
+    write_VTU_array_header(os, name.c_str(), 3);
+    for(std::size_t v : layout.used)
+    {
+      const auto& d = data.directions[v][static_cast<std::size_t>(k)];
+      os << d[0] << " " << d[1] << " " << d[2] << "\n";
+    }
+    for(std::size_t i = 0; i < ns; ++i) os << "0 0 0\n";
+    os << "</DataArray>\n";
+  }
+  if(data.magnitudes.empty()) return;
+  write_VTU_array_header(os, "magnitude", 1);
+  for(std::size_t v : layout.used) os << data.magnitudes[v] << "\n";
+  for(std::size_t i = 0; i < ns; ++i) os << "0\n";
+  os << "</DataArray>\n";
+}
+
 } // namespace internal
 
 namespace IO {
@@ -244,38 +374,56 @@ namespace IO {
 \ingroup PkgSurfaceMeshDirectionFieldsIO
 
 writes the field as a legacy VTK PolyData file (ASCII), which ParaView and
-VTK open: the triangles (`POLYGONS`), then the barycentres of the singular
-faces as extra points with one `VERTICES` cell each; point data
-`direction_0` ... `direction_{n-1}` (`VECTORS`, zero on the extra points) and
-`magnitude` (if known); cell data `singularity_index` (the index `k / n` on
-the singularity cells, 0 on the triangles). Coordinates are written with 17
-significant digits, so that reading back gives the same doubles.
+VTK open. Points: the vertices that belong to a face (renumbered in their
+order; a vertex of no face is left out), then the barycentre of each singular
+face, with one `VERTICES` cell each; cells: those vertices, then the
+triangles (`POLYGONS`). Data:
+- field data `degree` (the integer `n`);
+- point data `singularity_index` (the active scalars: the index `k / n` on the
+  singularity points, 0 on the vertices), `normals` (the active normals),
+  `direction_0` ... `direction_{n-1}` (`direction_0` is the active vectors;
+  zero on the singularity points), and `magnitude` (if known) as a plain
+  array, so that it is not taken for the glyphs' scale;
+- cell data `singularity_index` (the same index on the singularity cells, 0 on
+  the triangles).
+
+Coordinates are written with 17 significant digits, so that reading back gives
+the same doubles.
 
 \param os the output stream
 \param data the field to write
 */
 inline void write_VTK(std::ostream& os, const Direction_field_data& data)
 {
-  const std::size_t nv = data.points.size(), ns = data.singularities.size(), nf = data.faces.size();
+  const internal::VTK_layout layout(data);
+  const std::size_t nv = layout.used.size(), ns = data.singularities.size(), nf = layout.faces.size();
   os << std::setprecision(17);
   os << "# vtk DataFile Version 3.0\n"
      << "direction field of degree " << data.degree << " (CGAL Surface_mesh_direction_fields)\n"
-     << "ASCII\nDATASET POLYDATA\n";
+     << "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n" << data.degree << "\n";
   os << "POINTS " << nv + ns << " double\n";
-  for(const auto& p : data.points) os << p[0] << " " << p[1] << " " << p[2] << "\n";
-  for(const auto& p : data.singularity_points) os << p[0] << " " << p[1] << " " << p[2] << "\n";
+  layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
+    os << p[0] << " " << p[1] << " " << p[2] << "\n";
+  });
   if(ns > 0)
   {
     os << "VERTICES " << ns << " " << 2 * ns << "\n";
     for(std::size_t i = 0; i < ns; ++i) os << "1 " << nv + i << "\n";
   }
   os << "POLYGONS " << nf << " " << 4 * nf << "\n";
-  for(const auto& t : data.faces) os << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  os << "POINT_DATA " << nv + ns << "\n";
+  for(const auto& t : layout.faces) os << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  os << "POINT_DATA " << nv + ns << "\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n";
+  layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3&, double index, std::size_t) {
+    os << index << "\n";
+  });
+  os << "NORMALS normals double\n";
+  layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3& n, double, std::size_t) {
+    os << n[0] << " " << n[1] << " " << n[2] << "\n";
+  });
   for(int k = 0; k < data.degree; ++k)
   {
     os << "VECTORS direction_" << k << " double\n";
-    for(std::size_t v = 0; v < nv; ++v)
+    for(std::size_t v : layout.used)
     {
       const auto& d = data.directions[v][static_cast<std::size_t>(k)];
       os << d[0] << " " << d[1] << " " << d[2] << "\n";
@@ -284,14 +432,58 @@ inline void write_VTK(std::ostream& os, const Direction_field_data& data)
   }
   if(!data.magnitudes.empty())
   {
-    os << "SCALARS magnitude double 1\nLOOKUP_TABLE default\n";
-    for(double m : data.magnitudes) os << m << "\n";
+    os << "FIELD point_arrays 1\nmagnitude 1 " << nv + ns << " double\n";
+    for(std::size_t v : layout.used) os << data.magnitudes[v] << "\n";
     for(std::size_t i = 0; i < ns; ++i) os << "0\n";
   }
   // cells are ordered vertices first, then polygons
   os << "CELL_DATA " << ns + nf << "\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n";
   for(const auto& s : data.singularities) os << static_cast<double>(s.second) / data.degree << "\n";
   for(std::size_t f = 0; f < nf; ++f) os << "0\n";
+}
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsIO
+
+writes the field as a VTK XML UnstructuredGrid file (`.vtu`, ASCII), which
+ParaView, VTK and meshio open. It holds what `write_VTK()` writes, the same
+points, cells (VTK_VERTEX cells for the singularities, VTK_TRIANGLE cells for
+the faces) and arrays, with `singularity_index`, `direction_0` and `normals` as
+the active scalars, vectors and normals.
+
+\param os the output stream
+\param data the field to write
+*/
+inline void write_VTU(std::ostream& os, const Direction_field_data& data)
+{
+  const internal::VTK_layout layout(data);
+  const std::size_t nv = layout.used.size(), ns = data.singularities.size(), nf = layout.faces.size();
+  os << std::setprecision(17);
+  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+     << "<UnstructuredGrid>\n<FieldData>\n"
+     << "<DataArray type=\"Int32\" Name=\"degree\" NumberOfTuples=\"1\" format=\"ascii\">" << data.degree
+     << "</DataArray>\n</FieldData>\n"
+     << "<Piece NumberOfPoints=\"" << nv + ns << "\" NumberOfCells=\"" << ns + nf << "\">\n"
+     << "<PointData Scalars=\"singularity_index\" Vectors=\"direction_0\" Normals=\"normals\">\n";
+  internal::write_VTU_point_arrays(os, data, layout);
+  os << "</PointData>\n<CellData Scalars=\"singularity_index\">\n"
+     << "<DataArray type=\"Float64\" Name=\"singularity_index\" format=\"ascii\">\n";
+  for(const auto& s : data.singularities) os << static_cast<double>(s.second) / data.degree << "\n";
+  for(std::size_t f = 0; f < nf; ++f) os << "0\n";
+  os << "</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
+    os << p[0] << " " << p[1] << " " << p[2] << "\n";
+  });
+  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < ns; ++i) os << nv + i << "\n";
+  for(const auto& t : layout.faces) os << t[0] << " " << t[1] << " " << t[2] << "\n";
+  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= ns; ++i) os << i << "\n";
+  for(std::size_t f = 1; f <= nf; ++f) os << ns + 3 * f << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < ns; ++i) os << "1\n";  // VTK_VERTEX
+  for(std::size_t f = 0; f < nf; ++f) os << "5\n";  // VTK_TRIANGLE
+  os << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
 
 /*!

@@ -377,6 +377,13 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   Complex_dense_matrix kept(n, 0);              // the best Ritz vectors a restart keeps
   Complex_dense_matrix MX = hermitian_multiply(M, next), AU;
   u = next.col(0);
+  if(options.max_iterations == 0)  // no step: the start vector's own Rayleigh quotient and residual
+  {
+    hermitian_multiply(A, u, AU);
+    const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
+    result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
+    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (pencil.scale * MX.col(0).norm());
+  }
   while(result.iterations < options.max_iterations)
   {
     const Complex_dense_matrix W = factored.solve(MX);

@@ -25,6 +25,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -78,6 +79,19 @@ inline void describe_component(const Indexed_mesh& m, const Component& comp, Com
 }
 
 
+// Guidance coefficients whose largest length is far from 1 (vectors of length
+// 1e200 or 1e-200) are scaled together by a power of two to a largest length
+// in [1, 2): the solve and its norms then neither overflow nor underflow. Only
+// their ratios matter to the directions.
+inline void rescale_extreme_guidance(std::vector<std::complex<double> >& q)
+{
+  double largest = 0.;
+  for(const auto& c : q) largest = (std::max)({largest, std::abs(c.real()), std::abs(c.imag())});
+  if(!(largest > 0.) || (largest > 1e-100 && largest < 1e100)) return;
+  const int exponent = std::ilogb(largest);
+  for(auto& c : q) c = std::complex<double>(std::ldexp(c.real(), -exponent), std::ldexp(c.imag(), -exponent));
+}
+
 // The guidance field q (n-th power coefficients per vertex), from the
 // principal curvatures and/or a user vector field; empty if there is none.
 template <typename VertexDescriptor, typename NamedParameters, typename SparseSolver, typename ToArray>
@@ -120,9 +134,13 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
       const Vec3 g = to_array(get(guidance_map, vertex_of_index[i]));
       if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2]))
         throw Invalid_input_error("the guidance vector of vertex " + std::to_string(i) + " is not finite");
-      q[i] += tangent_coefficient(mesh, ts, i, g, degree, normals[i]);
+      // divided by its largest coordinate first, so that no square overflows or underflows
+      const double largest = (std::max)({std::abs(g[0]), std::abs(g[1]), std::abs(g[2])});
+      if(largest > 0.)
+        q[i] += largest * tangent_coefficient(mesh, ts, i, (1. / largest) * g, degree, normals[i]);
     }
   }
+  rescale_extreme_guidance(q);
   return q;
 }
 

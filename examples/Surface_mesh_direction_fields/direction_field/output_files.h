@@ -1,0 +1,137 @@
+// The files a run of direction_field writes, made safe for the user:
+//  - every output path is tried before the mesh is read (a temporary file is
+//    created beside it), so that a typo fails at once, not after the computation;
+//  - each output is written under its temporary name and checked after its last
+//    write and close (a full disk is an error, not a short file);
+//  - the temporary files are renamed to their names only when every output of
+//    the run has been written; on any failure no file of this run remains.
+// A path that exists and is not a regular file (/dev/null, /dev/stdout, a
+// pipe) is written directly, and checked the same way.
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
+#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
+
+#include "command_line_options.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files() { discard(); }
+
+  // Registers the output `path` of `option` (nothing if `path` is empty).
+  // `input` is the mesh file, which no output may replace.
+  void add(const std::string& option, const std::string& path, const std::string& input)
+  {
+    if(path.empty()) return;
+    if(path == "-") throw Usage_error(option + " needs a file name (use /dev/stdout to write to standard output)");
+    struct stat target;
+    const bool exists = ::stat(path.c_str(), &target) == 0;
+    if(exists && S_ISDIR(target.st_mode)) throw Usage_error(option + " '" + path + "' is a directory");
+    struct stat mesh;
+    if(exists && S_ISREG(target.st_mode) && ::stat(input.c_str(), &mesh) == 0 && mesh.st_dev == target.st_dev &&
+       mesh.st_ino == target.st_ino)
+      throw Usage_error(option + " '" + path + "' is the input mesh, which is never overwritten");
+    for(const auto& f : files_)
+      if(f->path == path) throw Usage_error(f->option + " and " + option + " both write '" + path + "'");
+    std::unique_ptr<File> f(new File{option, path, exists && !S_ISREG(target.st_mode) ? path : temporary_name(path), {}});
+    f->stream.open(f->written, std::ios::binary | std::ios::trunc);
+    if(!f->stream) throw Usage_error("cannot write " + option + " '" + path + "': " + std::strerror(errno));
+    files_.push_back(std::move(f));
+  }
+
+  // The stream of the output `path` (registered by add()).
+  std::ostream& stream(const std::string& path) { return find(path).stream; }
+
+  // Flushes and closes the output `path`; throws if anything written to it was lost.
+  void close(const std::string& path)
+  {
+    File& f = find(path);
+    f.stream.flush();
+    const bool written = static_cast<bool>(f.stream);
+    f.stream.close();
+    if(!written || !f.stream) throw Usage_error("could not write " + f.option + " '" + f.path + "' (disk full?)");
+  }
+
+  // Closes every output but `path`, checked.
+  void close_all_except(const std::string& path)
+  {
+    for(auto& f : files_)
+      if(f->path != path && f->stream.is_open()) close(f->path);
+  }
+
+  // Gives every output its name; call once everything has been written.
+  void commit()
+  {
+    for(auto& f : files_)
+      if(f->stream.is_open()) close(f->path);
+    for(std::size_t i = 0; i < files_.size(); ++i)
+    {
+      File& f = *files_[i];
+      if(f.written != f.path && std::rename(f.written.c_str(), f.path.c_str()) != 0)
+      {
+        const std::string reason = std::strerror(errno);
+        for(std::size_t j = 0; j < i; ++j)  // none of this run's files remains
+          if(files_[j]->written != files_[j]->path) std::remove(files_[j]->path.c_str());
+        throw Usage_error("cannot write " + f.option + " '" + f.path + "': " + reason);
+      }
+      f.committed = true;
+    }
+  }
+
+private:
+  struct File
+  {
+    std::string option, path, written;  // written: the temporary name, or the path itself
+    std::ofstream stream;
+    bool committed = false;
+  };
+
+  File& find(const std::string& path)
+  {
+    for(auto& f : files_)
+      if(f->path == path) return *f;
+    throw std::logic_error("output '" + path + "' was not registered");
+  }
+
+  // A new file beside `path`, readable as a file created by the user would be.
+  static std::string temporary_name(const std::string& path)
+  {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    std::string pattern = directory + "." + name + ".partial-XXXXXX";
+    const int fd = ::mkstemp(&pattern[0]);
+    if(fd < 0) throw Usage_error("cannot write '" + path + "': " + std::strerror(errno));
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    ::close(fd);
+    return pattern;
+  }
+
+  void discard()
+  {
+    for(auto& f : files_)
+    {
+      if(f->stream.is_open()) f->stream.close();
+      if(!f->committed && f->written != f->path) std::remove(f->written.c_str());
+    }
+  }
+
+  std::vector<std::unique_ptr<File> > files_;
+};
+
+#endif

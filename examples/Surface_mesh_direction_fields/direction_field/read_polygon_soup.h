@@ -1,0 +1,268 @@
+// Reading OFF, OBJ, PLY and STL files, ASCII and binary, into a polygon soup:
+// the points and the polygons as the file lists them, nothing repaired.
+//
+// Two demands shape this reader. Speed: the whole file is read at once and
+// its numbers parsed with std::from_chars, so that reading costs little beside
+// the computation. Distrust: a count in a file (vertices, faces, list sizes)
+// is checked against the bytes left in the file before anything is allocated
+// for it, so a corrupted header costs an error message, never gigabytes; every
+// error is a Mesh_input_error naming the file and the line (or byte) at fault.
+//
+// What is read, per format (anything else in the file is skipped):
+//   OFF  ASCII ([ST][C][N]OFF: the extra values of a line are skipped) and
+//        binary "OFF BINARY" (big-endian, as Geomview and CGAL write it);
+//   OBJ  "v x y z" and "f i j k ..." (1-based, negative = relative, "i/t/n");
+//   PLY  ascii, binary_little_endian and binary_big_endian: element vertex
+//        (x, y, z of any scalar type), element face (list vertex_indices or
+//        vertex_index); other elements and properties are skipped;
+//   STL  ASCII and binary; identical points are shared, numbered in the order
+//        of their first appearance (as CGAL's STL reader does).
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_POLYGON_SOUP_H
+#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_POLYGON_SOUP_H
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <sys/stat.h>
+#include <unordered_map>
+#include <vector>
+
+struct Mesh_input_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+// The polygons in one array: polygon p has the corners
+// corners[first_corner[p]] ... corners[first_corner[p + 1] - 1].
+struct Polygon_soup
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::size_t> first_corner = std::vector<std::size_t>(1, 0);
+  std::vector<std::size_t> corners;
+
+  std::size_t number_of_polygons() const { return first_corner.size() - 1; }
+  std::size_t size(std::size_t p) const { return first_corner[p + 1] - first_corner[p]; }
+  const std::size_t* begin(std::size_t p) const { return corners.data() + first_corner[p]; }
+  const std::size_t* end(std::size_t p) const { return corners.data() + first_corner[p + 1]; }
+  void end_polygon() { first_corner.push_back(corners.size()); }
+};
+
+namespace soup_reading {
+
+inline std::string lower_case_extension(const std::string& path)
+{
+  const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// The file's bytes. A regular file is read in one piece; anything else (a
+// pipe) until its end.
+inline std::string read_whole_file(const std::string& path)
+{
+  struct stat status;
+  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
+  if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not a mesh file");
+  std::ifstream in(path, std::ios::binary);
+  if(!in) throw Mesh_input_error("cannot open '" + path + "'");
+  std::string bytes;
+  if(S_ISREG(status.st_mode))
+  {
+    bytes.resize(static_cast<std::size_t>(status.st_size));
+    in.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
+    if(in.gcount() != static_cast<std::streamsize>(bytes.size())) throw Mesh_input_error("cannot read '" + path + "'");
+    return bytes;
+  }
+  char chunk[1 << 16];
+  while(in.read(chunk, sizeof chunk) || in.gcount() > 0) bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
+  return bytes;
+}
+
+// A cursor on a text file, line by line; comments start with '#'.
+class Text_reader
+{
+public:
+  Text_reader(const std::string& bytes, const std::string& path, std::size_t offset = 0)
+    : p_(bytes.data() + offset), end_(bytes.data() + bytes.size()), path_(path)
+  {}
+
+  [[noreturn]] void fail(const std::string& message) const
+  {
+    throw Mesh_input_error("'" + path_ + "' line " + std::to_string(line_) + ": " + message);
+  }
+  std::size_t bytes_left() const { return static_cast<std::size_t>(end_ - p_); }
+  const char* position() const { return p_; }
+  bool at_end() const { return p_ == end_; }
+
+  void skip_spaces()
+  {
+    while(p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\f' || *p_ == '\v')) ++p_;
+  }
+  bool at_line_end()
+  {
+    skip_spaces();
+    return p_ == end_ || *p_ == '\n' || *p_ == '#';
+  }
+  void next_line()
+  {
+    const void* newline = std::memchr(p_, '\n', bytes_left());
+    p_ = newline ? static_cast<const char*>(newline) + 1 : end_;
+    ++line_;
+  }
+  // Moves to the next line that holds data (not blank, not a comment).
+  bool next_data()
+  {
+    while(p_ != end_ && at_line_end())
+      if(p_ != end_) next_line();
+    return p_ != end_;
+  }
+  // Like next_data(), but across lines inside a statement (PLY ASCII, STL).
+  void skip_white()
+  {
+    while(p_ != end_ && std::isspace(static_cast<unsigned char>(*p_)))
+      if(*p_++ == '\n') ++line_;
+  }
+  std::string word()
+  {
+    skip_spaces();
+    const char* start = p_;
+    while(p_ != end_ && !std::isspace(static_cast<unsigned char>(*p_))) ++p_;
+    return std::string(start, p_);
+  }
+  std::string peek_word()
+  {
+    const char* start = p_;
+    std::string w = word();
+    p_ = start;
+    return w;
+  }
+  template <typename T>
+  T number(const char* what)
+  {
+    skip_spaces();
+    if(p_ != end_ && *p_ == '+') ++p_;
+    T value{};
+    const std::from_chars_result r = std::from_chars(p_, end_, value);
+    if(r.ec == std::errc::result_out_of_range) fail(std::string(what) + " out of range");
+    if(r.ec != std::errc() || (r.ptr != end_ && !std::isspace(static_cast<unsigned char>(*r.ptr)) && *r.ptr != '/' &&
+                               *r.ptr != '#'))
+      fail(std::string("expected ") + what + ", found '" + word() + "'");
+    p_ = r.ptr;
+    return value;
+  }
+  // Skips the rest of a token (the "/t/n" of an OBJ corner).
+  void skip_token() { while(p_ != end_ && !std::isspace(static_cast<unsigned char>(*p_))) ++p_; }
+
+private:
+  const char* p_;
+  const char* end_;
+  std::string path_;
+  std::size_t line_ = 1;
+};
+
+// A cursor on binary data of either byte order.
+class Binary_reader
+{
+public:
+  Binary_reader(const std::string& bytes, const std::string& path, std::size_t offset, bool big_endian)
+    : begin_(bytes.data()), p_(bytes.data() + offset), end_(bytes.data() + bytes.size()), path_(path),
+      big_endian_(big_endian)
+  {}
+
+  [[noreturn]] void fail(const std::string& message) const
+  {
+    throw Mesh_input_error("'" + path_ + "' byte " + std::to_string(p_ - begin_) + ": " + message);
+  }
+  std::size_t bytes_left() const { return static_cast<std::size_t>(end_ - p_); }
+  void skip(std::size_t n, const char* what)
+  {
+    if(n > bytes_left()) fail(std::string("the file ends inside ") + what);
+    p_ += n;
+  }
+  template <typename T>
+  T get(const char* what)
+  {
+    if(sizeof(T) > bytes_left()) fail(std::string("the file ends inside ") + what);
+    unsigned char raw[sizeof(T)];
+    std::memcpy(raw, p_, sizeof(T));
+    if(big_endian_ != host_is_big_endian()) std::reverse(raw, raw + sizeof(T));
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
+    p_ += sizeof(T);
+    return value;
+  }
+
+private:
+  static bool host_is_big_endian()
+  {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 0;
+  }
+  const char* begin_;
+  const char* p_;
+  const char* end_;
+  std::string path_;
+  bool big_endian_;
+};
+
+// `count` items of at least `bytes_each` bytes cannot be in `bytes_left` bytes.
+template <typename Reader>
+void check_count(const Reader& r, long long count, std::size_t bytes_each, const std::string& what)
+{
+  if(count < 0) r.fail("negative number of " + what);
+  if(bytes_each > 0 && static_cast<unsigned long long>(count) > r.bytes_left() / bytes_each)
+    r.fail("the header announces " + std::to_string(count) + " " + what + ", more than the " +
+           std::to_string(r.bytes_left()) + " bytes left in the file can hold");
+}
+
+inline std::array<double, 3> finite_point(double x, double y, double z, const char* format, std::size_t index)
+{
+  if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+    throw Mesh_input_error(std::string(format) + " vertex " + std::to_string(index) + " has a non-finite coordinate");
+  return {x, y, z};
+}
+
+} // namespace soup_reading
+
+#include "read_polygon_soup_formats.h"
+
+// Reads `path` (by its extension: .off, .obj, .ply or .stl, any case) into a
+// polygon soup. Throws Mesh_input_error with a one-line message if the file
+// cannot be read, is malformed, or refers to a vertex it does not have.
+inline Polygon_soup read_polygon_soup(const std::string& path)
+{
+  namespace sr = soup_reading;
+  struct stat status;
+  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
+  if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not a mesh file");
+  const std::string extension = sr::lower_case_extension(path);
+  if(extension != "off" && extension != "obj" && extension != "ply" && extension != "stl")
+    throw Mesh_input_error("'" + path + "': unknown mesh format (the name must end in .off, .obj, .ply or .stl)");
+  const std::string bytes = sr::read_whole_file(path);
+  Polygon_soup soup;
+  if(extension == "off") sr::read_OFF(bytes, path, soup);
+  else if(extension == "obj") sr::read_OBJ(bytes, path, soup);
+  else if(extension == "ply") sr::read_PLY(bytes, path, soup);
+  else sr::read_STL(bytes, path, soup);
+  for(std::size_t c = 0; c < soup.corners.size(); ++c)
+    if(soup.corners[c] >= soup.points.size())
+    {
+      const std::size_t face = static_cast<std::size_t>(
+        std::upper_bound(soup.first_corner.begin(), soup.first_corner.end(), c) - soup.first_corner.begin() - 1);
+      throw Mesh_input_error("face " + std::to_string(face) + " refers to vertex " + std::to_string(soup.corners[c]) +
+                             ", which does not exist");
+    }
+  return soup;
+}
+
+#endif

@@ -1,0 +1,268 @@
+#!/usr/bin/env python3
+"""Hostile files, failing outputs and absurd options given to direction_field.
+
+Every file is generated here (nothing is committed). Each run has a memory
+limit (1 GiB of address space) and a time limit; every bad case must end with
+exit status 1 and exactly one line on stderr, never a signal, a hang or a
+partial output file.
+
+    usage: test_hostile_input.py DIRECTION_FIELD OUTPUT_DIR
+"""
+import json
+import os
+import resource
+import shutil
+import struct
+import subprocess
+import sys
+
+BIN, OUT = sys.argv[1], sys.argv[2]
+shutil.rmtree(OUT, ignore_errors=True)
+os.makedirs(OUT)
+failures = []
+checks = 0
+MEMORY = 1 << 30
+
+
+def limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+
+
+def run(args, timeout=60, memory_limit=True):
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    return subprocess.run([BIN] + args, capture_output=True, text=True, timeout=timeout, env=env,
+                          preexec_fn=limit_memory if memory_limit else None)
+
+
+def check(condition, what):
+    global checks
+    checks += 1
+    if not condition:
+        failures.append(what)
+        print("FAILED:", what)
+
+
+def expect_error(args, what, contains=None, timeout=60, memory_limit=True):
+    try:
+        r = run(args, timeout, memory_limit)
+    except subprocess.TimeoutExpired:
+        check(False, what + ": hangs")
+        return None
+    lines = r.stderr.splitlines()
+    ok = r.returncode == 1 and len(lines) == 1 and lines[0].startswith("direction_field: error: ")
+    if contains is not None:
+        ok = ok and contains in r.stderr
+    check(ok, "%s: status %d, stderr %r" % (what, r.returncode, r.stderr[-300:]))
+    return r
+
+
+def write(name, data):
+    path = os.path.join(OUT, name)
+    with open(path, "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+    return path
+
+
+# ---------------------------------------------------------------- a valid mesh in every format
+OCT_POINTS = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+OCT_FACES = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+
+
+def off_text(points=OCT_POINTS, faces=OCT_FACES, counts=None):
+    counts = counts or "%d %d 0" % (len(points), len(faces))
+    return "OFF\n%s\n" % counts + "".join("%g %g %g\n" % p for p in points) + \
+           "".join("%d %s\n" % (len(f), " ".join(map(str, f))) for f in faces)
+
+
+def off_binary(nv=None, nf=None, face_size=None):
+    b = b"OFF BINARY\n" + struct.pack(">iii", len(OCT_POINTS) if nv is None else nv,
+                                      len(OCT_FACES) if nf is None else nf, 0)
+    for p in OCT_POINTS:
+        b += struct.pack(">fff", *p)
+    for f in OCT_FACES:
+        b += struct.pack(">i", 3 if face_size is None else face_size) + struct.pack(">iii", *f) + struct.pack(">i", 0)
+    return b
+
+
+def ply(fmt="binary_little_endian", nv=None, list_size=None, header_extra=""):
+    head = "ply\nformat %s 1.0\n%selement vertex %d\nproperty float x\nproperty float y\nproperty float z\n" \
+           "element face %d\nproperty list uchar int vertex_indices\nend_header\n" % (
+               fmt, header_extra, len(OCT_POINTS) if nv is None else nv, len(OCT_FACES))
+    if fmt == "ascii":
+        body = "".join("%g %g %g\n" % p for p in OCT_POINTS) + "".join(
+            "%d %d %d %d\n" % (((3 if list_size is None else list_size),) + f) for f in OCT_FACES)
+        return (head + body).encode()
+    e = "<" if fmt == "binary_little_endian" else ">"
+    body = b"".join(struct.pack(e + "fff", *p) for p in OCT_POINTS)
+    for f in OCT_FACES:
+        body += struct.pack(e + "B", 3) + struct.pack(e + "iii", *f)
+    if list_size is not None:  # a uint list length instead
+        head = head.replace("list uchar int", "list uint int")
+        body = b"".join(struct.pack(e + "fff", *p) for p in OCT_POINTS)
+        for f in OCT_FACES:
+            body += struct.pack(e + "I", list_size) + struct.pack(e + "iii", *f)
+    return head.encode() + body
+
+
+def stl_binary(count=None):
+    b = b"\0" * 80 + struct.pack("<I", len(OCT_FACES) if count is None else count)
+    for f in OCT_FACES:
+        b += struct.pack("<fff", 0, 0, 0)
+        for v in f:
+            b += struct.pack("<fff", *OCT_POINTS[v])
+        b += b"\0\0"
+    return b
+
+
+def stl_text():
+    s = "solid octahedron\n"
+    for f in OCT_FACES:
+        s += "facet normal 0 0 0\nouter loop\n" + "".join("vertex %g %g %g\n" % OCT_POINTS[v] for v in f) + \
+             "endloop\nendfacet\n"
+    return s + "endsolid octahedron\n"
+
+
+VALID = {"oct.off": off_text(), "oct_bin.off": off_binary(), "oct_bin_le.ply": ply(), "oct_bin_be.ply":
+         ply("binary_big_endian"), "oct_ascii.ply": ply("ascii"), "oct_bin.stl": stl_binary(),
+         "oct_ascii.stl": stl_text(),
+         "oct.obj": "".join("v %g %g %g\n" % p for p in OCT_POINTS) +
+                    "".join("f %d/1/1 %d//2 %d\n" % tuple(v + 1 for v in f) for f in OCT_FACES)}
+for name, data in VALID.items():
+    r = run([write(name, data), "--json", "--singularities", os.path.join(OUT, name + ".sing")])
+    ok = r.returncode == 0
+    if ok:
+        d = json.loads(r.stdout)
+        ok = d["mesh_vertices"] == 6 and d["mesh_faces"] == 8 and d["index_sum"] == 8 and d["repairs"]["faces_reoriented"] == 0
+    check(ok, "valid %s: %s %s" % (name, r.stdout[:200], r.stderr))
+
+# ---------------------------------------------------------------- hostile files
+HOSTILE = {
+    "property_before_element.ply": b"ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n",
+    "huge_faces.off": "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    "huge_vertices.off": "OFF\n2000000000 1 0\n0 0 0\n",
+    "overflowing_count.off": "OFF\n99999999999999999999 1 0\n0 0 0\n",
+    "negative_count.off": "OFF\n-5 1 0\n0 0 0\n",
+    "huge_face_size.off": "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n999999999 0 1 2\n",
+    "bin_huge_vertices.off": off_binary(nv=2000000000),
+    "bin_negative_faces.off": off_binary(nf=-3),
+    "bin_huge_face_size.off": off_binary(face_size=1000000000),
+    "huge_vertex_count.ply": ply(nv=2000000000),
+    "huge_vertex_count_ascii.ply": ply("ascii", nv=2000000000),
+    "negative_count.ply": ply("ascii", nv=-1),
+    "huge_list.ply": ply(list_size=2000000000),
+    "huge_list_ascii.ply": ply("ascii", list_size=2000000000),
+    "no_end_header.ply": b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n",
+    "unknown_type.ply": b"ply\nformat ascii 1.0\nelement vertex 1\nproperty quaternion x\nend_header\n1\n",
+    "huge_count.stl": stl_binary(count=4000000000)[:84 + 50 * 8] + b"x",
+    "not_a_solid.stl": "solid x\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0\n",
+    "zero_index.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
+    "far_index.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999\n",
+    "huge_index.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n",
+    "nan.obj": "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    "inf.off": "OFF\n3 1 0\n1e999 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    "empty.off": "",
+    "empty.ply": "",
+    "empty.stl": "",
+    "empty.obj": "",
+    "no_faces.off": "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",
+    "text.off": "hello world\n",
+    "unknown.xyz": "0 0 0\n",
+}
+for name, data in HOSTILE.items():
+    expect_error([write(name, data)], "hostile file " + name)
+
+# truncated binary files: every cut is an error or a smaller mesh, never a signal
+for name in ["oct_bin.off", "oct_bin_le.ply", "oct_bin_be.ply", "oct_bin.stl"]:
+    data = VALID[name] if isinstance(VALID[name], bytes) else VALID[name].encode()
+    for cut in range(1, len(data), max(1, len(data) // 23)):
+        r = run([write("cut_" + name, data[:cut]), "--json"])
+        check(r.returncode in (0, 1) and (r.returncode == 0 or len(r.stderr.splitlines()) == 1),
+              "truncated %s at %d: status %d %r" % (name, cut, r.returncode, r.stderr))
+
+# a directory, a missing file
+expect_error([OUT], "a directory as the mesh", "directory")
+expect_error([os.path.join(OUT, "missing.off")], "a missing mesh", "cannot open")
+
+# ---------------------------------------------------------------- outputs
+mesh = os.path.join(OUT, "oct.off")
+OUTPUT_OPTIONS = ["--directions", "--singularities", "--json-file", "--png", "--vtk", "--ply", "--rosy", "--ffield",
+                  "--singularity-list", "--streamlines", "--mesh-out"]
+for option in OUTPUT_OPTIONS:
+    expect_error([mesh, option, "/dev/full"], option + " /dev/full", "/dev/full")
+    expect_error([mesh, option, os.path.join(OUT, "no_such_folder", "x")], option + " in a missing folder")
+    expect_error([mesh, option, OUT], option + " naming a folder", "directory")
+# stdout on a full device
+with open("/dev/full", "w") as full:
+    r = subprocess.run([BIN, mesh, "--json"], stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
+check(r.returncode == 1 and "standard output" in r.stderr, "stdout on /dev/full: %d %r" % (r.returncode, r.stderr))
+
+# an unwritable output fails before the mesh is read: the mesh is a pipe nobody writes
+fifo = os.path.join(OUT, "never_written.off")
+os.mkfifo(fifo)
+expect_error([fifo, "--directions", os.path.join(OUT, "no_such_folder", "d.txt")], "unwritable output before reading",
+             timeout=20)
+
+# a failure after other outputs were written leaves none of them, and no temporary file
+kept = os.path.join(OUT, "kept")
+os.makedirs(kept)
+expect_error([mesh, "--directions", os.path.join(kept, "d.txt"), "--vtk", os.path.join(kept, "f.vtk"),
+              "--json-file", "/dev/full"], "late failure")
+check(os.listdir(kept) == [], "late failure leaves no file: %s" % os.listdir(kept))
+# an existing output is kept as it was when the run fails
+with open(os.path.join(kept, "d.txt"), "w") as f:
+    f.write("old\n")
+expect_error([mesh, "--directions", os.path.join(kept, "d.txt"), "--png", "/dev/full"], "late failure, old file")
+check(open(os.path.join(kept, "d.txt")).read() == "old\n" and os.listdir(kept) == ["d.txt"], "old output kept")
+# the input is never an output
+before = open(mesh).read()
+expect_error([mesh, "--directions", mesh], "output over the input", "input mesh")
+check(open(mesh).read() == before, "input unchanged")
+expect_error([mesh, "--directions", os.path.join(OUT, "same"), "--vtk", os.path.join(OUT, "same")], "one file twice")
+# success: every file there, nothing else
+good = os.path.join(OUT, "good")
+os.makedirs(good)
+r = run([mesh, "--directions", os.path.join(good, "d.txt"), "--vtk", os.path.join(good, "f.vtu"),
+         "--json-file", os.path.join(good, "r.json"), "--quiet"])
+check(r.returncode == 0 and r.stderr == "" and sorted(os.listdir(good)) == ["d.txt", "f.vtu", "r.json"],
+      "success writes exactly the outputs: %s %r" % (sorted(os.listdir(good)), r.stderr))
+
+# ---------------------------------------------------------------- options
+for args, what in [(["--degree", "0"], "degree 0"), (["--degree", "1001"], "degree above the maximum"),
+                   (["--degree", "2147483647"], "degree 2^31-1"), (["--degree", "4.5"], "degree not an integer"),
+                   (["--seed", "-1"], "negative seed"), (["--max-iterations", "-1"], "negative iterations"),
+                   (["--max-iterations", "4294967296"], "iterations above 2^32-1"), ([""], "empty mesh name"),
+                   (["--lambda", "1"], "lambda without guidance"), (["--alignment-weight", "0.5"], "weight alone"),
+                   (["--s", "2"], "s out of range"), (["--s", "nan"], "s NaN"), (["--tolerance", "-1"], "tolerance < 0"),
+                   (["--feature-angle", "200"], "feature angle"), (["--align", "curvature", "--alignment-weight", "1"],
+                                                                   "weight 1"),
+                   (["--rosy", os.path.join(OUT, "r.rosy"), "--degree", "6"], "rosy with n = 6"),
+                   (["--ffield", os.path.join(OUT, "r.ffield"), "--degree", "2"], "ffield with n = 2"),
+                   (["--directions"], "option without value"), (["--bogus"], "unknown option"),
+                   ([mesh, mesh], "two meshes")]:
+    r = expect_error([mesh] + args if args and args[0] not in ("", mesh) else args, "option: " + what)
+    if r is not None and what == "feature angle":
+        check("200" in r.stderr and "200.000000" not in r.stderr, "numbers printed compactly: %r" % r.stderr)
+
+# --max-iterations 0: not converged, its real residual, said on stderr, exit 0
+r = run([mesh, "--max-iterations", "0", "--json"])
+d = json.loads(r.stdout) if r.returncode == 0 else {}
+check(r.returncode == 0 and d.get("converged") is False and (d.get("residual") or 0) > 0 and "warning" in r.stderr,
+      "--max-iterations 0: %s %r" % (r.stdout[:300], r.stderr))
+
+# guidance vectors of any size: scaled safely (the same field for any uniform scale)
+guidance = [(0, 0, 1), (0, 0, 1), (0, 0, 1), (0, 0, 1), (1, 0, 0), (1, 0, 0)]
+results = []
+for scale in [1.0, 1e200, 1e-200]:
+    g = write("guidance_%g.txt" % scale, "".join("%r %r %r\n" % tuple(scale * x for x in v) for v in guidance))
+    r = run([mesh, "--guidance", g, "--directions", os.path.join(OUT, "g%g.txt" % scale), "--json"])
+    ok = r.returncode == 0 and json.loads(r.stdout)["alignment_weight"] > 0
+    check(ok, "guidance scaled by %g: %s %r" % (scale, r.stdout[:200], r.stderr))
+    results.append([[float(x) for x in l.split()] for l in open(os.path.join(OUT, "g%g.txt" % scale))] if ok else None)
+check(None not in results and all(abs(a - b) < 1e-9 for r in results[1:] for u, v in zip(results[0], r)
+                                   for a, b in zip(u, v)), "guidance: the same field at every scale")
+# an extreme alignment weight is computed, not refused
+r = run([mesh, "--align", "curvature", "--alignment-weight", "1e-300", "--json"])
+check(r.returncode == 0, "--alignment-weight 1e-300: %d %r" % (r.returncode, r.stderr))
+
+print("%d checks, %d failed" % (checks, len(failures)))
+sys.exit(1 if failures else 0)
