@@ -63,7 +63,7 @@ def subdivided(path, folder):
 
 
 def run(program, mesh, outputs, folder):
-    args = [program, mesh, "--json", "--quiet"] + [a.replace("OUT", folder) for a in outputs.split()]
+    args = [program, mesh, "--json"] + [a.replace("OUT", folder) for a in outputs.split()]
     start = time.perf_counter()
     r = subprocess.run(args, capture_output=True, text=True, env=dict(os.environ, OPENBLAS_NUM_THREADS="1"))
     wall = 1000 * (time.perf_counter() - start)

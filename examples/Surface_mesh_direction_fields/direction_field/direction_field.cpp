@@ -20,7 +20,7 @@
 
 #include "command_line_options.h"
 #include "exchange_files.h"
-#include "number_writer.h"
+#include <CGAL/Surface_mesh_direction_fields/internal/number_writer.h>
 #include "output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
@@ -134,7 +134,7 @@ void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input
 {
   if(!o.directions.empty())
   {
-    Number_writer w(outputs.stream(o.directions));
+    CGAL::Surface_mesh_direction_fields::internal::Number_writer w(outputs.stream(o.directions));
     for(Vertex_index v : input.vertex_of_file_vertex)  // a merged or duplicated vertex: its first copy
     {
       const Vector_3& d = field.directions[std::size_t(v)];

@@ -6,7 +6,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_EXCHANGE_FILES_H
 
 #include "command_line_options.h"
-#include "number_writer.h"
+#include <CGAL/Surface_mesh_direction_fields/internal/number_writer.h>
 #include "output_files.h"
 #include "read_polygon_soup.h"
 
@@ -27,7 +27,7 @@ namespace SMDF = CGAL::Surface_mesh_direction_fields;
 inline void write_streamline_points(std::ostream& os, const std::vector<SMDF::Streamline>& lines)
 {
   os << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  Number_writer w(os);
+  SMDF::internal::Number_writer w(os);
   for(const SMDF::Streamline& l : lines)
     for(const auto& p : l.points) w.line(p[0], p[1], p[2]);
   w.flush();
@@ -36,7 +36,7 @@ inline void write_streamline_points(std::ostream& os, const std::vector<SMDF::St
 
 inline void write_streamline_connectivity(std::ostream& os, const std::vector<SMDF::Streamline>& lines)
 {
-  Number_writer w(os);
+  SMDF::internal::Number_writer w(os);
   w.text("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
   std::size_t point = 0;
   for(const SMDF::Streamline& l : lines)
@@ -74,7 +74,7 @@ inline void write_streamlines_VTK_XML(std::ostream& os, const std::vector<SMDF::
 // OBJ: the points as "v", each line as "l i j k ...".
 inline void write_streamlines_OBJ(std::ostream& os, const std::vector<SMDF::Streamline>& lines)
 {
-  Number_writer w(os);
+  SMDF::internal::Number_writer w(os);
   w.text("# field lines of a direction field (CGAL Surface_mesh_direction_fields)\n");
   for(const SMDF::Streamline& l : lines)
     for(const auto& p : l.points) w.text("v ").number(p[0]).space().number(p[1]).space().number(p[2]).end_line();
@@ -90,7 +90,7 @@ inline void write_streamlines_OBJ(std::ostream& os, const std::vector<SMDF::Stre
 // CGAL's polylines text format: "N x1 y1 z1 ... xN yN zN" per line.
 inline void write_streamlines_text(std::ostream& os, const std::vector<SMDF::Streamline>& lines)
 {
-  Number_writer w(os);
+  SMDF::internal::Number_writer w(os);
   for(const SMDF::Streamline& l : lines)
   {
     w.integer(static_cast<long long>(l.points.size()));

@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/number_writer.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -326,41 +327,55 @@ struct VTK_layout
   }
 };
 
-inline void write_VTU_array_header(std::ostream& os, const char* name, int components)
+// The k-th direction of every written point (zero on the singularity points).
+inline void write_directions(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout, int k)
 {
-  os << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"" << components
-     << "\" format=\"ascii\">\n";
+  for(std::size_t v : layout.used)
+  {
+    const auto& d = data.directions[v][static_cast<std::size_t>(k)];
+    w.line(d[0], d[1], d[2]);
+  }
+  for(std::size_t i = 0; i < data.singularities.size(); ++i) w.text("0 0 0\n");
+}
+
+inline void write_magnitudes(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
+{
+  for(std::size_t v : layout.used) w.number(data.magnitudes[v]).end_line();
+  for(std::size_t i = 0; i < data.singularities.size(); ++i) w.text("0\n");
+}
+
+// The index k / n of the singularity cells, then 0 for every triangle.
+inline void write_cell_indices(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
+{
+  for(const auto& s : data.singularities) w.number(static_cast<double>(s.second) / data.degree).end_line();
+  for(std::size_t f = 0; f < layout.faces.size(); ++f) w.text("0\n");
+}
+
+inline void write_VTU_array_header(Number_writer& w, const std::string& name, int components)
+{
+  w.text("<DataArray type=\"Float64\" Name=\"").text(name).text("\" NumberOfComponents=\"").integer(components)
+    .text("\" format=\"ascii\">\n");
 }
 
 // The point data of write_VTU().
-inline void write_VTU_point_arrays(std::ostream& os, const Direction_field_data& data, const VTK_layout& layout)
+inline void write_VTU_point_arrays(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
 {
-  const std::size_t ns = data.singularities.size();
-  write_VTU_array_header(os, "singularity_index", 1);
-  layout.for_each_point(data, [&](const Vec3&, const Vec3&, double index, std::size_t) { os << index << "\n"; });
-  os << "</DataArray>\n";
-  write_VTU_array_header(os, "normals", 3);
-  layout.for_each_point(data, [&](const Vec3&, const Vec3& n, double, std::size_t) {
-    os << n[0] << " " << n[1] << " " << n[2] << "\n";
-  });
-  os << "</DataArray>\n";
+  write_VTU_array_header(w, "singularity_index", 1);
+  layout.for_each_point(data, [&](const Vec3&, const Vec3&, double index, std::size_t) { w.number(index).end_line(); });
+  w.text("</DataArray>\n");
+  write_VTU_array_header(w, "normals", 3);
+  layout.for_each_point(data, [&](const Vec3&, const Vec3& n, double, std::size_t) { w.line(n[0], n[1], n[2]); });
+  w.text("</DataArray>\n");
   for(int k = 0; k < data.degree; ++k)
   {
-    const std::string name = "direction_" + std::to_string(k);
-    write_VTU_array_header(os, name.c_str(), 3);
-    for(std::size_t v : layout.used)
-    {
-      const auto& d = data.directions[v][static_cast<std::size_t>(k)];
-      os << d[0] << " " << d[1] << " " << d[2] << "\n";
-    }
-    for(std::size_t i = 0; i < ns; ++i) os << "0 0 0\n";
-    os << "</DataArray>\n";
+    write_VTU_array_header(w, "direction_" + std::to_string(k), 3);
+    write_directions(w, data, layout, k);
+    w.text("</DataArray>\n");
   }
   if(data.magnitudes.empty()) return;
-  write_VTU_array_header(os, "magnitude", 1);
-  for(std::size_t v : layout.used) os << data.magnitudes[v] << "\n";
-  for(std::size_t i = 0; i < ns; ++i) os << "0\n";
-  os << "</DataArray>\n";
+  write_VTU_array_header(w, "magnitude", 1);
+  write_magnitudes(w, data, layout);
+  w.text("</DataArray>\n");
 }
 
 } // namespace internal
@@ -396,50 +411,46 @@ the same doubles.
 inline void write_VTK(std::ostream& os, const Direction_field_data& data)
 {
   const internal::VTK_layout layout(data);
-  const std::size_t nv = layout.used.size(), ns = data.singularities.size(), nf = layout.faces.size();
-  os << std::setprecision(17);
-  os << "# vtk DataFile Version 3.0\n"
-     << "direction field of degree " << data.degree << " (CGAL Surface_mesh_direction_fields)\n"
-     << "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n" << data.degree << "\n";
-  os << "POINTS " << nv + ns << " double\n";
+  const long long nv = static_cast<long long>(layout.used.size());
+  const long long ns = static_cast<long long>(data.singularities.size()), nf = static_cast<long long>(layout.faces.size());
+  internal::Number_writer w(os);
+  w.text("# vtk DataFile Version 3.0\ndirection field of degree ").integer(data.degree)
+    .text(" (CGAL Surface_mesh_direction_fields)\nASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n")
+    .integer(data.degree).end_line();
+  w.text("POINTS ").integer(nv + ns).text(" double\n");
   layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
-    os << p[0] << " " << p[1] << " " << p[2] << "\n";
+    w.line(p[0], p[1], p[2]);
   });
   if(ns > 0)
   {
-    os << "VERTICES " << ns << " " << 2 * ns << "\n";
-    for(std::size_t i = 0; i < ns; ++i) os << "1 " << nv + i << "\n";
+    w.text("VERTICES ").integer(ns).space().integer(2 * ns).end_line();
+    for(long long i = 0; i < ns; ++i) w.text("1 ").integer(nv + i).end_line();
   }
-  os << "POLYGONS " << nf << " " << 4 * nf << "\n";
-  for(const auto& t : layout.faces) os << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  os << "POINT_DATA " << nv + ns << "\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n";
+  w.text("POLYGONS ").integer(nf).space().integer(4 * nf).end_line();
+  for(const auto& t : layout.faces)
+    w.text("3 ").integer(static_cast<long long>(t[0])).space().integer(static_cast<long long>(t[1])).space()
+      .integer(static_cast<long long>(t[2])).end_line();
+  w.text("POINT_DATA ").integer(nv + ns).text("\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n");
   layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3&, double index, std::size_t) {
-    os << index << "\n";
+    w.number(index).end_line();
   });
-  os << "NORMALS normals double\n";
+  w.text("NORMALS normals double\n");
   layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3& n, double, std::size_t) {
-    os << n[0] << " " << n[1] << " " << n[2] << "\n";
+    w.line(n[0], n[1], n[2]);
   });
   for(int k = 0; k < data.degree; ++k)
   {
-    os << "VECTORS direction_" << k << " double\n";
-    for(std::size_t v : layout.used)
-    {
-      const auto& d = data.directions[v][static_cast<std::size_t>(k)];
-      os << d[0] << " " << d[1] << " " << d[2] << "\n";
-    }
-    for(std::size_t i = 0; i < ns; ++i) os << "0 0 0\n";
+    w.text("VECTORS direction_").integer(k).text(" double\n");
+    internal::write_directions(w, data, layout, k);
   }
   if(!data.magnitudes.empty())
   {
-    os << "FIELD point_arrays 1\nmagnitude 1 " << nv + ns << " double\n";
-    for(std::size_t v : layout.used) os << data.magnitudes[v] << "\n";
-    for(std::size_t i = 0; i < ns; ++i) os << "0\n";
+    w.text("FIELD point_arrays 1\nmagnitude 1 ").integer(nv + ns).text(" double\n");
+    internal::write_magnitudes(w, data, layout);
   }
   // cells are ordered vertices first, then polygons
-  os << "CELL_DATA " << ns + nf << "\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n";
-  for(const auto& s : data.singularities) os << static_cast<double>(s.second) / data.degree << "\n";
-  for(std::size_t f = 0; f < nf; ++f) os << "0\n";
+  w.text("CELL_DATA ").integer(ns + nf).text("\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n");
+  internal::write_cell_indices(w, data, layout);
 }
 
 /*!
@@ -457,33 +468,35 @@ the active scalars, vectors and normals.
 inline void write_VTU(std::ostream& os, const Direction_field_data& data)
 {
   const internal::VTK_layout layout(data);
-  const std::size_t nv = layout.used.size(), ns = data.singularities.size(), nf = layout.faces.size();
-  os << std::setprecision(17);
-  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-     << "<UnstructuredGrid>\n<FieldData>\n"
-     << "<DataArray type=\"Int32\" Name=\"degree\" NumberOfTuples=\"1\" format=\"ascii\">" << data.degree
-     << "</DataArray>\n</FieldData>\n"
-     << "<Piece NumberOfPoints=\"" << nv + ns << "\" NumberOfCells=\"" << ns + nf << "\">\n"
-     << "<PointData Scalars=\"singularity_index\" Vectors=\"direction_0\" Normals=\"normals\">\n";
-  internal::write_VTU_point_arrays(os, data, layout);
-  os << "</PointData>\n<CellData Scalars=\"singularity_index\">\n"
-     << "<DataArray type=\"Float64\" Name=\"singularity_index\" format=\"ascii\">\n";
-  for(const auto& s : data.singularities) os << static_cast<double>(s.second) / data.degree << "\n";
-  for(std::size_t f = 0; f < nf; ++f) os << "0\n";
-  os << "</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  const long long nv = static_cast<long long>(layout.used.size());
+  const long long ns = static_cast<long long>(data.singularities.size()), nf = static_cast<long long>(layout.faces.size());
+  internal::Number_writer w(os);
+  w.text("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+         "<UnstructuredGrid>\n<FieldData>\n"
+         "<DataArray type=\"Int32\" Name=\"degree\" NumberOfTuples=\"1\" format=\"ascii\">")
+    .integer(data.degree).text("</DataArray>\n</FieldData>\n<Piece NumberOfPoints=\"").integer(nv + ns)
+    .text("\" NumberOfCells=\"").integer(ns + nf)
+    .text("\">\n<PointData Scalars=\"singularity_index\" Vectors=\"direction_0\" Normals=\"normals\">\n");
+  internal::write_VTU_point_arrays(w, data, layout);
+  w.text("</PointData>\n<CellData Scalars=\"singularity_index\">\n"
+         "<DataArray type=\"Float64\" Name=\"singularity_index\" format=\"ascii\">\n");
+  internal::write_cell_indices(w, data, layout);
+  w.text("</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
   layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
-    os << p[0] << " " << p[1] << " " << p[2] << "\n";
+    w.line(p[0], p[1], p[2]);
   });
-  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for(std::size_t i = 0; i < ns; ++i) os << nv + i << "\n";
-  for(const auto& t : layout.faces) os << t[0] << " " << t[1] << " " << t[2] << "\n";
-  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for(std::size_t i = 1; i <= ns; ++i) os << i << "\n";
-  for(std::size_t f = 1; f <= nf; ++f) os << ns + 3 * f << "\n";
-  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for(std::size_t i = 0; i < ns; ++i) os << "1\n";  // VTK_VERTEX
-  for(std::size_t f = 0; f < nf; ++f) os << "5\n";  // VTK_TRIANGLE
-  os << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  w.text("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+  for(long long i = 0; i < ns; ++i) w.integer(nv + i).end_line();
+  for(const auto& t : layout.faces)
+    w.integer(static_cast<long long>(t[0])).space().integer(static_cast<long long>(t[1])).space()
+      .integer(static_cast<long long>(t[2])).end_line();
+  w.text("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+  for(long long i = 1; i <= ns; ++i) w.integer(i).end_line();
+  for(long long f = 1; f <= nf; ++f) w.integer(ns + 3 * f).end_line();
+  w.text("</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+  for(long long i = 0; i < ns; ++i) w.text("1\n");  // VTK_VERTEX
+  for(long long f = 0; f < nf; ++f) w.text("5\n");  // VTK_TRIANGLE
+  w.text("</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 }
 
 /*!
@@ -551,17 +564,19 @@ inline void write_PLY(std::ostream& os, const Direction_field_data& data)
   if(has_magnitude) os << "property double magnitude\n";
   os << "element face " << data.faces.size() << "\n"
      << "property list uchar int vertex_indices\nproperty int singularity\nend_header\n";
+  internal::Number_writer w(os);
   for(std::size_t v = 0; v < data.points.size(); ++v)
   {
     const auto& p = data.points[v];
     const auto& d = data.directions[v][0];
-    os << p[0] << " " << p[1] << " " << p[2] << " " << d[0] << " " << d[1] << " " << d[2];
-    if(has_magnitude) os << " " << data.magnitudes[v];
-    os << "\n";
+    w.number(p[0]).space().number(p[1]).space().number(p[2]).space();
+    w.number(d[0]).space().number(d[1]).space().number(d[2]);
+    if(has_magnitude) w.space().number(data.magnitudes[v]);
+    w.end_line();
   }
   for(std::size_t f = 0; f < data.faces.size(); ++f)
-    os << "3 " << data.faces[f][0] << " " << data.faces[f][1] << " " << data.faces[f][2] << " " << singularity[f]
-       << "\n";
+    w.text("3 ").integer(static_cast<long long>(data.faces[f][0])).space().integer(static_cast<long long>(data.faces[f][1]))
+      .space().integer(static_cast<long long>(data.faces[f][2])).space().integer(singularity[f]).end_line();
 }
 
 /*!
@@ -651,7 +666,8 @@ inline void write_rosy(std::ostream& os, const Direction_field_data& data)
 {
   os << std::setprecision(17);
   os << data.faces.size() << "\n" << data.degree << "\n";
-  for(const auto& d : data.face_directions) os << d[0] << " " << d[1] << " " << d[2] << "\n";
+  internal::Number_writer w(os);
+  for(const auto& d : data.face_directions) w.line(d[0], d[1], d[2]);
 }
 
 /*!
@@ -698,13 +714,15 @@ inline void write_ffield(std::ostream& os, const Direction_field_data& data)
   os << "# frame generated by CGAL Surface_mesh_direction_fields, degree " << data.degree << "\n"
      << "target frame\n" << data.faces.size() << "\n"
      << "k1 k2 k1v_x k1v_y k1v_z k2v_x k2v_y k2v_z\n";
+  internal::Number_writer out(os);
   for(std::size_t f = 0; f < data.faces.size(); ++f)
   {
     const auto& t = data.faces[f];
     const Vec3 normal = internal::triangle_unit_normal(data.points, t);
     const Vec3& u = data.face_directions[f];
     const Vec3 w = internal::cross(normal, u);
-    os << "1 1 " << u[0] << " " << u[1] << " " << u[2] << " " << w[0] << " " << w[1] << " " << w[2] << "\n";
+    out.text("1 1 ").number(u[0]).space().number(u[1]).space().number(u[2]).space();
+    out.line(w[0], w[1], w[2]);
   }
 }
 

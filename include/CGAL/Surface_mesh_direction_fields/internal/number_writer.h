@@ -1,12 +1,28 @@
-// Lines of numbers written fast: std::to_chars into a buffer, the same text as
-// an ostream with std::setprecision(17) gives ("%.17g": reading it back gives
-// the same double), a few times faster than the stream's own formatting.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_NUMBER_WRITER_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_NUMBER_WRITER_H
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+// Text files of numbers written fast (the exchange files, the program's
+// outputs): std::to_chars into a buffer gives the same text as an ostream
+// with std::setprecision(17) ("%.17g": reading it back gives the same
+// double), several times faster than the stream's own formatting.
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_NUMBER_WRITER_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_NUMBER_WRITER_H
 
 #include <charconv>
 #include <ostream>
 #include <string>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
 
 class Number_writer
 {
@@ -26,6 +42,7 @@ public:
     return append(text, std::to_chars(text, text + sizeof text, i).ptr);
   }
   Number_writer& text(const std::string& s) { return append(s.data(), s.data() + s.size()); }
+  Number_writer& text(const char* s) { return append(s, s + std::char_traits<char>::length(s)); }
   Number_writer& space() { return append(" ", " " + 1); }
   Number_writer& end_line() { return append("\n", "\n" + 1); }
 
@@ -49,5 +66,9 @@ private:
   std::ostream& os_;
   std::string buffer_;
 };
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
 
 #endif
