@@ -217,16 +217,24 @@ void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
 
+void report_out_of_memory(Progress& progress)
+{
+  const std::string step = progress.step();
+  progress.interrupt();
+  std::cerr << "direction_field: error: out of memory" << (step.empty() ? "" : " while " + step) << std::endl;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+  Progress progress(true);
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
     Output_files outputs;
     register_outputs(o, outputs);
-    Progress progress(o.quiet);
+    progress = Progress(o.quiet);
     Program_timings timings;
     progress.begin("reading " + o.mesh, timings.read);
     Polygon_soup soup = read_polygon_soup(o.mesh);
@@ -249,17 +257,26 @@ int main(int argc, char** argv)
     if(!o.png.empty()) write_picture(o, input.mesh, field, streamlines, outputs);
     outputs.close_all_except(o.json_file);
     progress.end();
-    if(!o.json_file.empty()) write_json(outputs.stream(o.json_file), o, input, field.result, timings);
+    if(!o.json_file.empty())
+    {
+      write_json(outputs.stream(o.json_file), o, input, field.result, timings);
+      outputs.close(o.json_file);
+    }
     write_report(o, input, field.result, timings);
     outputs.commit();
     return EXIT_SUCCESS;
   }
+  catch(const std::length_error&)  // a size beyond what a container can hold: memory too
+  {
+    report_out_of_memory(progress);
+  }
   catch(const std::bad_alloc&)
   {
-    std::cerr << "direction_field: error: out of memory" << std::endl;
+    report_out_of_memory(progress);
   }
   catch(const std::exception& e)  // bad input, bad options, unwritable outputs: one line
   {
+    progress.interrupt();
     std::cerr << "direction_field: error: " << e.what() << std::endl;
   }
   return EXIT_FAILURE;

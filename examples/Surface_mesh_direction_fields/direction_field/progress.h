@@ -14,12 +14,23 @@ class Progress
 public:
   explicit Progress(bool quiet) : talk_(!quiet && ::isatty(STDERR_FILENO) == 1) {}
 
+  // The step under way ("" between steps), for an error message.
+  const std::string& step() const { return step_; }
+
+  // Ends the line of the step under way, so that an error gets a line of its own.
+  void interrupt()
+  {
+    if(talk_ && !step_.empty()) std::fprintf(stderr, "\n");
+    step_.clear();
+  }
+
   bool talks() const { return talk_; }
 
   // Starts a step; its time goes to `milliseconds` when end() is called.
   void begin(const std::string& what, double& milliseconds)
   {
     target_ = &milliseconds;
+    step_ = what;
     start_ = std::chrono::steady_clock::now();
     if(talk_) std::fprintf(stderr, "direction_field: %s ...", what.c_str());
     if(talk_) std::fflush(stderr);
@@ -29,6 +40,7 @@ public:
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
     if(target_) *target_ += ms;
     target_ = nullptr;
+    step_.clear();
     if(talk_) std::fprintf(stderr, " %.0f ms\n", ms);
   }
   // A line of its own (the library's steps, reported as they happen).
@@ -40,6 +52,7 @@ public:
 private:
   bool talk_;
   double* target_ = nullptr;
+  std::string step_;
   std::chrono::steady_clock::time_point start_;
 };
 
