@@ -4,6 +4,8 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
 
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -41,7 +43,7 @@ struct Options
 // to a million; the program's outputs grow with n (the VTK file holds n vectors
 // per vertex, the picture draws n strokes per vertex), and beyond a few hundred
 // directions most faces of a common mesh are singular anyway.
-constexpr int maximum_degree = 1000;
+constexpr int program_maximum_degree = 1000;
 
 // A problem with the input or the options: reported on one line, exit status 1.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
@@ -133,13 +135,8 @@ inline void print_help(std::ostream& os)
      << "so); 1 with one line on stderr for bad input, bad options or an output that cannot be written.\n";
 }
 
-// A number, compactly, for messages.
-inline std::string compact(double x)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", x);
-  return buffer;
-}
+// A number, compactly, for messages (as the library's messages print them).
+inline std::string compact(double x) { return CGAL::Surface_mesh_direction_fields::internal::compact_number(x); }
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)
@@ -192,8 +189,8 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--degree")
   {
     const long long n = parse_number<long long>(a, v);
-    if(n < 1 || n > maximum_degree)
-      throw Usage_error("--degree expects an integer from 1 to " + std::to_string(maximum_degree) + ", got " + v);
+    if(n < 1 || n > program_maximum_degree)
+      throw Usage_error("--degree expects an integer from 1 to " + std::to_string(program_maximum_degree) + ", got " + v);
     o.degree = static_cast<int>(n);
   }
   else if(a == "--s") o.s = parse_number<double>(a, v);

@@ -77,8 +77,9 @@ namespace internal {
 
 inline void check_degree(int degree)
 {
-  if(degree < 1)
-    throw Invalid_input_error("the degree n must be at least 1 (got " + std::to_string(degree) + ")");
+  if(degree < 1 || degree > maximum_degree)
+    throw Invalid_input_error("the degree n must be from 1 to " + std::to_string(maximum_degree) + " (got " +
+                              std::to_string(degree) + ")");
 }
 
 // The normals of a triangle soup, as the library computes them

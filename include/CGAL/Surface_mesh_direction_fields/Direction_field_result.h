@@ -23,6 +23,15 @@ namespace Surface_mesh_direction_fields {
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
+the largest degree `n` the functions of this package accept (one million):
+the integer index `k` of a face is at most about `3n/2`, so it and the sums of
+`k` stay exact in the integer types of the results.
+*/
+constexpr int maximum_degree = 1000000;
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
 What the solve found on one connected component of the mesh (components are
 numbered in the order of their smallest vertex index).
 */
@@ -94,8 +103,9 @@ struct Direction_field_result
   std::vector<Component_report> components;
   /// number of vertices without incident face (they receive the zero vector)
   std::size_t number_of_isolated_vertices = 0;
-  /// sum of the integer indices `k` over all faces
-  int index_sum = 0;
+  /// sum of the integer indices `k` over all faces (a 64-bit sum: `n` times the
+  /// Euler characteristic of a closed mesh, which no degree up to `maximum_degree` overflows)
+  long long index_sum = 0;
   /// number of faces with a non-zero index
   std::size_t number_of_singular_faces = 0;
   /// largest number of inverse iterations over the components

@@ -472,8 +472,8 @@ private:
       {
         if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, options, user_solver, report, timings);
         throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
-                                  std::to_string(report.eigenvalue) + " of component " + std::to_string(c) +
-                                  " (got " + std::to_string(lambda) + ")");
+                                  internal::compact_number(report.eigenvalue) + " of component " + std::to_string(c) +
+                                  " (got " + internal::compact_number(lambda) + ")");
       }
     }
     report.lambda = lambda;

@@ -14,11 +14,24 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
+
+namespace internal {
+
+// A number in an error message, compactly ("1e+09", "0.5"), not std::to_string's six decimals.
+inline std::string compact_number(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef

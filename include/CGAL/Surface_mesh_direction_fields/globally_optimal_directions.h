@@ -69,7 +69,9 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
 \cgalNamedParamsBegin
   \cgalParamNBegin{degree}
     \cgalParamDescription{the degree `n` of the field: 1 for a vector (direction) field,
-                          2 for a line field, 4 for a cross field; any `n >= 1`}
+                          2 for a line field, 4 for a cross field; any `n` from 1 to
+                          `maximum_degree` (one million: the integer index `k` of a face,
+                          at most about `3n/2`, and the sums of `k` stay exact)}
     \cgalParamType{`int`}
     \cgalParamDefault{`1`}
   \cgalParamNEnd

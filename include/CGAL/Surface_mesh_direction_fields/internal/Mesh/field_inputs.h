@@ -55,10 +55,11 @@ struct Point_to_array
 
 inline void check_field_parameters(int degree, double s)
 {
-  if(degree < 1)
-    throw Invalid_input_error("the degree n must be at least 1 (got " + std::to_string(degree) + ")");
+  if(degree < 1 || degree > maximum_degree)
+    throw Invalid_input_error("the degree n must be from 1 to " + std::to_string(maximum_degree) + " (got " +
+                              std::to_string(degree) + ")");
   if(!(s >= -1. && s <= 1.))
-    throw Invalid_input_error("the smoothness parameter s must lie in [-1, 1] (got " + std::to_string(s) + ")");
+    throw Invalid_input_error("the smoothness parameter s must lie in [-1, 1] (got " + compact_number(s) + ")");
 }
 
 // Euler characteristic of a component: V - E + F with E = (3F + B) / 2, where B
@@ -170,7 +171,7 @@ Alignment_request alignment_request(const NamedParameters& np, bool has_guidance
   if(r.lambda_given && !std::isfinite(r.lambda))
     throw Invalid_input_error("alignment_lambda must be a finite number");
   if(r.weight_given && !(r.weight > 0. && r.weight < 1.))
-    throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + std::to_string(r.weight) + ")");
+    throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + compact_number(r.weight) + ")");
   if(r.weight_given && !has_guidance)
     throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
   return r;
