@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Fuzz-style test of the reader and the solver, through the command line:
-randomly perturbed and truncated OFF files must give either a result (exit 0,
+randomly perturbed and truncated OFF files, and the same mesh as binary and
+ASCII PLY, binary STL, binary OFF and OBJ with random bytes changed, inserted,
+deleted or cut, must give either a result (exit 0,
 finite unit or zero directions, one JSON line) or a clean error (exit 1, one
 line on stderr) -- never a crash, a hang or a NaN.
 
@@ -63,13 +65,69 @@ def mutate(text):
     junk = "".join(chr(rng.randrange(1, 256)) for _ in range(rng.randrange(1, 10)))
     return text[:pos] + junk + text[pos:], "bytes"
 
+# The same mesh in the other formats the reader knows, mutated byte-wise:
+# flips, insertions, deletions and truncations anywhere, headers included.
+import struct
+
+
+def other_formats(text):
+    tokens = [l.split("#")[0] for l in text.split("\n")]
+    words = " ".join(tokens).split()
+    nv, nf = int(words[1]), int(words[2])
+    pts = [tuple(float(x) for x in words[4 + 3 * i:7 + 3 * i]) for i in range(nv)]
+    at, faces = 4 + 3 * nv, []
+    for _ in range(nf):
+        k = int(words[at])
+        faces.append(tuple(int(x) for x in words[at + 1:at + 1 + k]))
+        at += 1 + k
+    ply_head = ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+                "element face %d\nproperty list uchar int vertex_indices\nend_header\n")
+    binary_ply = (ply_head % ("binary_little_endian", nv, nf)).encode() + \
+        b"".join(struct.pack("<fff", *p) for p in pts) + \
+        b"".join(struct.pack("<B", len(f)) + struct.pack("<%di" % len(f), *f) for f in faces)
+    ascii_ply = (ply_head % ("ascii", nv, nf) + "".join("%r %r %r\n" % p for p in pts) +
+                 "".join("%d %s\n" % (len(f), " ".join(map(str, f))) for f in faces)).encode()
+    stl = b"\0" * 80 + struct.pack("<I", nf) + b"".join(
+        struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *pts[v]) for v in f[:3]) + b"\0\0" for f in faces)
+    binary_off = b"OFF BINARY\n" + struct.pack(">3i", nv, nf, 0) + b"".join(struct.pack(">3f", *p) for p in pts) + \
+        b"".join(struct.pack(">i", len(f)) + struct.pack(">%di" % len(f), *f) + struct.pack(">i", 0) for f in faces)
+    obj = ("".join("v %r %r %r\n" % p for p in pts) +
+           "".join("f %s\n" % " ".join(str(v + 1) for v in f) for f in faces)).encode()
+    return [("ply", binary_ply), ("ply", ascii_ply), ("stl", stl), ("off", binary_off), ("obj", obj)]
+
+
+def mutate_bytes(data):
+    data = bytearray(data)
+    kind = rng.randrange(4)
+    if kind == 0:
+        return bytes(data[:rng.randrange(len(data))])
+    for _ in range(rng.randrange(1, 6)):
+        pos = rng.randrange(len(data))
+        if kind == 1:
+            data[pos] = rng.randrange(256)
+        elif kind == 2:
+            data[pos:pos] = bytes(rng.randrange(256) for _ in range(rng.randrange(1, 5)))
+        else:
+            del data[pos:pos + rng.randrange(1, 5)]
+    return bytes(data)
+
+
 failures = 0
 outcomes = {"ok": 0, "error": 0}
-for case in range(cases):
-    text, kind = mutate(base)
-    path = os.path.join(out, "case.off")
-    with open(path, "w", encoding="latin-1") as f:
-        f.write(text)
+byte_cases = [(ext, data) for ext, data in other_formats(base) for _ in range(40)]
+for case in range(cases + len(byte_cases)):
+    if case < cases:
+        text, kind = mutate(base)
+        path = os.path.join(out, "case.off")
+        with open(path, "w", encoding="latin-1") as f:
+            f.write(text)
+    else:
+        ext, data = byte_cases[case - cases]
+        kind = "bytes of ." + ext
+        text = mutate_bytes(data).decode("latin-1")
+        path = os.path.join(out, "case." + ext)
+        with open(path, "w", encoding="latin-1") as f:
+            f.write(text)
     dirs = os.path.join(out, "dirs.txt")
     if os.path.exists(dirs):
         os.remove(dirs)
@@ -109,10 +167,10 @@ for case in range(cases):
         problem = f"exit status {p.returncode} (crash?) {p.stderr[-300:]!r}"
     if problem:
         failures += 1
-        with open(os.path.join(out, f"failed_{case}.off"), "w", encoding="latin-1") as f:
+        with open(os.path.join(out, f"failed_{case}" + os.path.splitext(path)[1]), "w", encoding="latin-1") as f:
             f.write(text)
         print(f"FAILED case {case} ({kind}): {problem}")
 
 print(f"fuzz: {outcomes['ok']} results, {outcomes['error']} clean errors")
-print(f"{cases - failures} passed, {failures} failed")
+print(f"{cases + len(byte_cases) - failures} passed, {failures} failed")
 sys.exit(1 if failures else 0)
