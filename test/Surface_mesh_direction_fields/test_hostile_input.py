@@ -175,6 +175,29 @@ HOSTILE = {
 for name, data in HOSTILE.items():
     expect_error([write(name, data)], "hostile file " + name)
 
+# a huge non-planar polygon (CGAL's exhaustive triangulation would take hours): a fan, in seconds
+import random as _random
+_rng = _random.Random(7)
+_n = 20000
+big = write("huge_polygon.off", "OFF\n%d 1 0\n" % _n + "".join("%r %r %r\n" % (_rng.random(), _rng.random(), _rng.random())
+                                                               for _ in range(_n)) + "%d %s\n" % (_n, " ".join(map(str, range(_n)))))
+try:
+    r = run([big, "--json"], timeout=120)
+    check(r.returncode == 0 and json.loads(r.stdout)["repairs"]["polygons_triangulated"] == 1,
+          "huge polygon: %d %r" % (r.returncode, r.stderr))
+except subprocess.TimeoutExpired:
+    check(False, "huge polygon: hangs")
+
+# many non-planar polygons of 256 vertices: CGAL's search for a few of them, fans for the rest
+many = write("many_polygons.off", "OFF\n%d 300 0\n" % (256 * 300) +
+             "".join("%r %r %r\n" % (_rng.random(), _rng.random(), _rng.random()) for _ in range(256 * 300)) +
+             "".join("256 %s\n" % " ".join(map(str, range(256 * j, 256 * j + 256))) for j in range(300)))
+try:
+    r = run([many, "--json"], timeout=60)
+    check(r.returncode == 0, "many polygons: %d %r" % (r.returncode, r.stderr))
+except subprocess.TimeoutExpired:
+    check(False, "many polygons: too slow")
+
 # truncated binary files: every cut is an error or a smaller mesh, never a signal
 for name in ["oct_bin.off", "oct_bin_le.ply", "oct_bin_be.ply", "oct_bin.stl"]:
     data = VALID[name] if isinstance(VALID[name], bytes) else VALID[name].encode()

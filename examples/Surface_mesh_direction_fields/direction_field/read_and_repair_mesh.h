@@ -8,7 +8,8 @@
 //  2. repeated consecutive vertices are removed from each polygon, and polygons
 //     left with fewer than 3 vertices are dropped;
 //  3. polygons with more than 3 vertices are triangulated by CGAL's
-//     Polygon_mesh_processing (a fan if that fails);
+//     Polygon_mesh_processing (a fan if that fails, beyond 256 vertices, or
+//     once a time budget is spent: see triangulate_polygon());
 //  4. repeated triangles (same three vertices) are dropped;
 //  5. the triangles are oriented consistently, and non-manifold vertices are
 //     duplicated, by CGAL::Polygon_mesh_processing::orient_polygon_soup();
@@ -89,11 +90,25 @@ typedef std::array<double, 3> P3;
 // into it: CGAL's hole filling on the polygon as a closed polyline
 // (Polygon_mesh_processing::triangulate_hole_polyline(), the same
 // triangulation as PMP's triangulate_faces()), a fan where it finds none.
+// CGAL's search falls back on an exhaustive one, cubic in time and quadratic
+// in memory, where its Delaunay search fails (a non-planar polygon). So that
+// no file can make the program run for hours, a polygon is searched only if
+// it has at most `largest_searched_polygon` vertices (a tenth of a second at
+// worst) and the cubes of the sizes searched so far stay within
+// `search_budget` (some seconds in all); other polygons are fans.
+constexpr std::size_t largest_searched_polygon = 256;
+
 template <typename Point>
-std::vector<std::array<std::size_t, 3> > triangulate_polygon(const std::vector<Point>& polygon)
+std::vector<std::array<std::size_t, 3> > triangulate_polygon(const std::vector<Point>& polygon,
+                                                            double& search_budget)
 {
   std::vector<CGAL::Triple<int, int, int> > triples;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polygon, std::back_inserter(triples));
+  const double cost = std::pow(static_cast<double>(polygon.size()), 3.);
+  if(polygon.size() <= largest_searched_polygon && cost <= search_budget)
+  {
+    search_budget -= cost;
+    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polygon, std::back_inserter(triples));
+  }
   std::vector<std::array<std::size_t, 3> > triangles;
   for(const auto& t : triples)
     triangles.push_back({std::size_t(t.first), std::size_t(t.second), std::size_t(t.third)});
@@ -161,6 +176,7 @@ inline void triangulate_soup(const Polygon_soup& soup, const std::vector<std::si
 {
   triangles.reserve(soup.number_of_polygons());
   polygon_of_triangle.reserve(soup.number_of_polygons());
+  double search_budget = 5e8;  // about 30 non-planar polygons of 256 vertices, 4 s
   for(std::size_t f = 0; f < soup.number_of_polygons(); ++f)
   {
     if(soup.size(f) == 3)  // the common case, without a polygon of its own
@@ -181,7 +197,7 @@ inline void triangulate_soup(const Polygon_soup& soup, const std::vector<std::si
     {
       std::vector<CGAL::Simple_cartesian<double>::Point_3> corners;
       for(std::size_t v : poly) corners.emplace_back(soup.points[v][0], soup.points[v][1], soup.points[v][2]);
-      local = triangulate_polygon(corners);
+      local = triangulate_polygon(corners, search_budget);
       ++report.triangulated_polygons;
       report.triangles_from_polygons += local.size();
     }
