@@ -198,6 +198,20 @@ try:
 except subprocess.TimeoutExpired:
     check(False, "many polygons: too slow")
 
+# a run stopped by a signal leaves no file of its own (the slow file above keeps it busy)
+import signal as _signal
+import time as _time
+stopped = os.path.join(OUT, "stopped")
+os.makedirs(stopped)
+for sig in [_signal.SIGINT, _signal.SIGTERM]:
+    p = subprocess.Popen([BIN, many, "--directions", os.path.join(stopped, "d.txt"), "--vtk", os.path.join(stopped, "f.vtk")],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _time.sleep(1.0)
+    p.send_signal(sig)
+    p.wait(timeout=30)
+    check(p.returncode == -sig and os.listdir(stopped) == [],
+          "stopped by signal %d: status %d, left %s" % (sig, p.returncode, os.listdir(stopped)))
+
 # truncated binary files: every cut is an error or a smaller mesh, never a signal
 for name in ["oct_bin.off", "oct_bin_le.ply", "oct_bin_be.ply", "oct_bin.stl"]:
     data = VALID[name] if isinstance(VALID[name], bytes) else VALID[name].encode()

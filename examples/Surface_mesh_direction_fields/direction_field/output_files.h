@@ -6,13 +6,15 @@
 //  - the temporary files are renamed to their names only when every output of
 //    the run has been written; on any failure no file of this run remains.
 // A path that exists and is not a regular file (/dev/null, /dev/stdout, a
-// pipe) is written directly, and checked the same way.
+// pipe) is written directly, and checked the same way. A run stopped by
+// SIGINT, SIGTERM or SIGHUP removes its temporary files before it ends.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
 
 #include "command_line_options.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +24,42 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
+
+// The temporary files of the run, where a signal handler can reach them
+// (fixed storage: the handler may only call async-signal-safe functions).
+namespace output_files_internal {
+
+constexpr int most_files = 32;
+constexpr std::size_t longest_path = 4096;
+inline char temporary_paths[most_files][longest_path];
+inline volatile std::sig_atomic_t temporary_count = 0;
+
+extern "C" inline void remove_temporaries_and_stop(int signal)
+{
+  for(int i = 0; i < temporary_count; ++i)
+    if(temporary_paths[i][0] != '\0') ::unlink(temporary_paths[i]);
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// Records `path` (returns its slot, or -1 if it cannot be recorded).
+inline int remember(const std::string& path)
+{
+  if(temporary_count >= most_files || path.size() >= longest_path) return -1;
+  const int slot = temporary_count;
+  std::memcpy(temporary_paths[slot], path.c_str(), path.size() + 1);
+  temporary_count = slot + 1;
+  if(slot == 0)
+    for(int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, remove_temporaries_and_stop);
+  return slot;
+}
+
+inline void forget(int slot)
+{
+  if(slot >= 0) temporary_paths[slot][0] = '\0';
+}
+
+} // namespace output_files_internal
 
 class Output_files
 {
@@ -47,6 +85,7 @@ public:
     for(const auto& f : files_)
       if(f->path == path) throw Usage_error(f->option + " and " + option + " both write '" + path + "'");
     std::unique_ptr<File> f(new File{option, path, exists && !S_ISREG(target.st_mode) ? path : temporary_name(path), {}});
+    if(f->written != f->path) f->slot = output_files_internal::remember(f->written);
     f->stream.open(f->written, std::ios::binary | std::ios::trunc);
     if(!f->stream) throw Usage_error("cannot write " + option + " '" + path + "': " + std::strerror(errno));
     files_.push_back(std::move(f));
@@ -88,6 +127,7 @@ public:
         throw Usage_error("cannot write " + f.option + " '" + f.path + "': " + reason);
       }
       f.committed = true;
+      output_files_internal::forget(f.slot);
     }
   }
 
@@ -97,6 +137,7 @@ private:
     std::string option, path, written;  // written: the temporary name, or the path itself
     std::ofstream stream;
     bool committed = false;
+    int slot = -1;  // in output_files_internal's list of temporary files
   };
 
   File& find(const std::string& path)
@@ -128,6 +169,7 @@ private:
     {
       if(f->stream.is_open()) f->stream.close();
       if(!f->committed && f->written != f->path) std::remove(f->written.c_str());
+      output_files_internal::forget(f->slot);
     }
   }
 
