@@ -37,6 +37,7 @@ struct Options
   bool eigenvalue_bound = false;
   std::string curvature_estimate = "quadric-fit";
   double feature_angle = -1.;  // negative: no feature alignment
+  std::string solver = "default";
 };
 
 // The largest degree the program accepts. The library computes any degree up
@@ -89,6 +90,9 @@ inline const Option_help option_help[] = {
                                     "name: one 'N x1 y1 z1 ... xN yN zN' per line"},
   {"Outputs", "--mesh-out FILE", "the repaired triangle mesh the outputs refer to (.off, .obj or .ply)"},
   {"Outputs", "--quiet", "say nothing on stderr while running (progress is shown only on a terminal)"},
+  {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the factorization split over the "
+                                    "processes of mpirun (mpirun -np K direction_field MESH --solver petsc; a build "
+                                    "with PETSc)"},
   {"Program", "--help, -h", "this text"},
   {"Program", "--version", "the program's version"},
 };
@@ -101,7 +105,8 @@ inline const char* const usage =
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
-  "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--help] [--version]\n";
+  "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--solver default|petsc]\n"
+  "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
 {
@@ -204,6 +209,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--constrain-boundary") o.constrain_boundary = v;
   else if(a == "--curvature-estimate") o.curvature_estimate = v;
   else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
+  else if(a == "--solver") o.solver = v;
   else return false;
   return true;
 }
@@ -221,6 +227,12 @@ inline void check_options(const Options& o)
     throw Usage_error("--feature-angle expects an angle in degrees in (0, 180), got " + compact(o.feature_angle));
   if(o.curvature_estimate != "quadric-fit" && o.curvature_estimate != "hopf")
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
+  if(o.solver != "default" && o.solver != "petsc")
+    throw Usage_error("--solver expects default or petsc, got '" + o.solver + "'");
+#ifndef SMDF_WITH_PETSC
+  if(o.solver == "petsc")
+    throw Usage_error("--solver petsc: this build has no distributed solver (PETSc with complex scalars was not found)");
+#endif
   if(o.lambda_given && o.weight_given) throw Usage_error("give either --lambda or --alignment-weight, not both");
   if(o.weight_given && !(o.weight > 0. && o.weight < 1.))
     throw Usage_error("--alignment-weight expects a number in (0, 1), got " + compact(o.weight));

@@ -27,6 +27,10 @@
 #include "read_and_repair_mesh.h"
 #include "reports.h"
 
+#ifdef SMDF_WITH_PETSC
+#include <CGAL/Surface_mesh_direction_fields/Petsc_solver_traits.h>
+#endif
+
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -119,9 +123,15 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_
       return SMDF::compute_globally_optimal_directions(input.mesh, directions, np.edge_is_feature_map(is_feature));
     return SMDF::compute_globally_optimal_directions(input.mesh, directions, np);
   };
+  auto with_solver = [&](auto np) {
+#ifdef SMDF_WITH_PETSC
+    if(o.solver == "petsc") return with_features(np.sparse_linear_solver(SMDF::Petsc_solver_traits()));
+#endif
+    return with_features(np);
+  };
   auto with_guidance = [&](auto np) {
-    if(o.guidance.empty()) return with_features(np);
-    return with_features(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
+    if(o.guidance.empty()) return with_solver(np);
+    return with_solver(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
   };
   // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
   field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))
@@ -209,13 +219,47 @@ void report_computation(const Progress& progress, const SMDF::Direction_field_re
 
 // The summary or the JSON on stdout, checked.
 void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
-                  const Program_timings& timings)
+                  const Program_timings& timings, int ranks)
 {
-  if(o.json) write_json(std::cout, o, input, r, timings);
-  else write_summary(std::cout, o, input, r, timings);
+  if(o.json) write_json(std::cout, o, input, r, timings, ranks);
+  else write_summary(std::cout, o, input, r, timings, ranks);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
+
+// --solver petsc: MPI and PETSc for the whole run (every process computes;
+// the first one writes), nothing otherwise.
+class Processes
+{
+public:
+  explicit Processes(const Options& o)
+  {
+#ifdef SMDF_WITH_PETSC
+    if(o.solver != "petsc") return;
+    if(PetscInitializeNoArguments() != 0) throw Usage_error("--solver petsc: PETSc (MPI) could not start");
+    m_petsc = true;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &m_rank);
+    MPI_Comm_size(PETSC_COMM_WORLD, &m_size);
+#else
+    (void)o;
+#endif
+  }
+  ~Processes()
+  {
+#ifdef SMDF_WITH_PETSC
+    if(m_petsc) PetscFinalize();
+#endif
+  }
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+  bool writes() const { return m_rank == 0; }
+  int size() const { return m_size; }
+
+private:
+  bool m_petsc = false;
+  int m_rank = 0, m_size = 1;
+};
 
 void report_out_of_memory(Progress& progress)
 {
@@ -232,9 +276,10 @@ int main(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
+    const Processes processes(o);
     Output_files outputs;
-    register_outputs(o, outputs);
-    progress = Progress(o.quiet);
+    if(processes.writes()) register_outputs(o, outputs);
+    progress = Progress(o.quiet || !processes.writes());
     Program_timings timings;
     progress.begin("reading " + o.mesh, timings.read);
     Polygon_soup soup = read_polygon_soup(o.mesh);
@@ -248,6 +293,7 @@ int main(int argc, char** argv)
     progress.begin("computing the field", compute_ms);
     compute_field(o, input, field);
     progress.end();
+    if(!processes.writes()) return EXIT_SUCCESS;  // the first process writes everything
     report_computation(progress, field.result);
     progress.begin("writing", timings.write);
     write_file_order_outputs(o, input, field, outputs);
@@ -259,10 +305,10 @@ int main(int argc, char** argv)
     progress.end();
     if(!o.json_file.empty())
     {
-      write_json(outputs.stream(o.json_file), o, input, field.result, timings);
+      write_json(outputs.stream(o.json_file), o, input, field.result, timings, processes.size());
       outputs.close(o.json_file);
     }
-    write_report(o, input, field.result, timings);
+    write_report(o, input, field.result, timings, processes.size());
     outputs.commit();
     return EXIT_SUCCESS;
   }

@@ -50,7 +50,7 @@ inline const SMDF::Component_report& main_component(const SMDF::Direction_field_
 
 template <typename Mesh>
 void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
-                const Program_timings& timings)
+                const Program_timings& timings, int ranks)
 {
   const Mesh& mesh = input.mesh;
   const Repair_report& rep = input.report;
@@ -84,12 +84,13 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"factorization\":" << number(r.timings.factorization_ms)
      << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms)
      << ",\"read\":" << number(timings.read) << ",\"repair\":" << number(timings.repair)
-     << ",\"write\":" << number(timings.write) << "},\"io_ms\":" << number(timings.io()) << "}\n";
+     << ",\"write\":" << number(timings.write) << "},\"io_ms\":" << number(timings.io()) << ",\"solver\":\"" << o.solver << "\",\"ranks\":" << ranks
+     << "}\n";
 }
 
 template <typename Mesh>
 void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
-                   const Program_timings& timings)
+                   const Program_timings& timings, int ranks)
 {
   const Mesh& mesh = input.mesh;
   int chi = 0;
@@ -98,6 +99,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
      << "size            " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces, "
      << r.components.size() << " component(s), Euler characteristic " << chi << "\n"
      << "field           degree n = " << r.degree << ", s = " << r.smoothness_parameter << "\n";
+  if(o.solver != "default")
+    os << "solver          " << o.solver << " on " << ranks << " process" << (ranks > 1 ? "es" : "") << "\n";
   if(input.report.any())
   {
     os << "repairs         " << input.report.summary() << "\n";

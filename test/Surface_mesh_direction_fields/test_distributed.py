@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""The distributed solver (--solver petsc under mpirun) against the
+single-process one: the same smallest eigenvalues (to 1e-8 relative) and the
+same singular faces, for the smoothest field on meshes with several components
+and with boundary, for the curvature-aligned and the boundary-constrained
+fields, on 1, 2 and 4 processes (4 leaves some process without a row of a
+small component).
+
+    usage: test_distributed.py DIRECTION_FIELD MPIEXEC SHARED_MESH_DIR OUTPUT_DIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+BIN, MPIEXEC, SHARED, OUT = sys.argv[1:5]
+shutil.rmtree(OUT, ignore_errors=True)
+os.makedirs(OUT)
+# Open MPI refuses root without these; more ranks than cores need --oversubscribe
+ENV = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+failures, checks = [], 0
+
+
+def check(ok, what):
+    global checks
+    checks += 1
+    if not ok:
+        failures.append(what)
+        print("FAILED:", what)
+
+
+def run(mesh, options, ranks, tag):
+    sing = os.path.join(OUT, tag + ".sing")
+    args = [BIN, mesh, "--json", "--singularities", sing] + options
+    if ranks > 0:
+        args = [MPIEXEC, "-np", str(ranks)] + args + ["--solver", "petsc"]
+    r = subprocess.run(args, capture_output=True, text=True, env=ENV, timeout=600)
+    check(r.returncode == 0, "%s: status %d %r" % (tag, r.returncode, r.stderr[-500:]))
+    if r.returncode != 0:
+        return None, None
+    return json.loads(r.stdout), open(sing).read()
+
+
+# two components, one of them a single triangle
+two_parts = os.path.join(OUT, "sphere_and_triangle.off")
+with open(two_parts, "w") as f:
+    import math
+    rings, points, faces = 12, [], []
+    for i in range(rings + 1):
+        for j in range(2 * rings):
+            t, p = math.pi * i / rings, math.pi * j / rings
+            points.append((math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t)))
+    index = lambda i, j: i * 2 * rings + j % (2 * rings)
+    for i in range(rings):
+        for j in range(2 * rings):
+            a, b, c, d = index(i, j), index(i, j + 1), index(i + 1, j), index(i + 1, j + 1)
+            faces += [(a, c, b), (b, c, d)]
+    n = len(points)
+    points += [(5, 0, 0), (6, 0, 0), (5, 1, 0)]
+    faces.append((n, n + 1, n + 2))
+    f.write("OFF\n%d %d 0\n" % (len(points), len(faces)) + "".join("%r %r %r\n" % p for p in points) +
+            "".join("3 %d %d %d\n" % t for t in faces))
+
+cases = [(two_parts, [], "smoothest")]
+for name, options, what in [("bones.off", [], "smoothest"), ("plane_holes.off", [], "smoothest"),
+                            ("fandisk.off", ["--align", "curvature"], "aligned"),
+                            ("plane_holes.off", ["--constrain-boundary", "tangent"], "constrained")]:
+    path = os.path.join(SHARED, name)
+    if SHARED and os.path.exists(path):
+        cases.append((path, options, what))
+    else:
+        print("SKIPPED %s: no shared meshes" % name)
+
+for mesh, options, what in cases:
+    tag = os.path.basename(mesh) + "_" + what
+    single, single_sing = run(mesh, options, 0, tag + "_single")
+    for ranks in [1, 2, 4]:
+        d, sing = run(mesh, options, ranks, "%s_np%d" % (tag, ranks))
+        if single is None or d is None:
+            continue
+        check(d["solver"] == "petsc" and d["ranks"] == ranks, tag + ": solver and ranks in the JSON")
+        # an aligned field computes lambda_1 with a solver that cannot tell an indefinite matrix (null otherwise)
+        same_values = all(a is None or b is None or abs(a - b) <= 1e-8 * abs(a) or abs(a - b) < 1e-20
+                          for a, b in zip(single["eigenvalues"], d["eigenvalues"]))
+        check(same_values, "%s np=%d: eigenvalues %s against %s" % (tag, ranks, d["eigenvalues"][:4],
+                                                                 single["eigenvalues"][:4]))
+        check(sing == single_sing and d["index_sum"] == single["index_sum"],
+              "%s np=%d: the same singular faces" % (tag, ranks))
+
+print("%d checks, %d failed" % (checks, len(failures)))
+sys.exit(1 if failures else 0)
