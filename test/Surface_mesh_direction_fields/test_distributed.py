@@ -14,21 +14,15 @@ import shutil
 import subprocess
 import sys
 
+from checks import Checks
+
 BIN, MPIEXEC, SHARED, OUT = sys.argv[1:5]
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
 # Open MPI refuses root without these; more ranks than cores need --oversubscribe
 ENV = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
-failures, checks = [], 0
-
-
-def check(ok, what):
-    global checks
-    checks += 1
-    if not ok:
-        failures.append(what)
-        print("FAILED:", what)
+check = Checks()
 
 
 def run(mesh, options, ranks, tag):
@@ -89,5 +83,4 @@ for mesh, options, what in cases:
         check(sing == single_sing and d["index_sum"] == single["index_sum"],
               "%s np=%d: the same singular faces" % (tag, ranks))
 
-print("%d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+check.finish()

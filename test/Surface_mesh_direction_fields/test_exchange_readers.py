@@ -14,6 +14,8 @@ import shutil
 import subprocess
 import sys
 
+from checks import Checks
+
 try:
     import meshio
     import vtk
@@ -25,15 +27,7 @@ except ImportError as e:
 BIN, SHARED, OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
-failures, checks = [], 0
-
-
-def check(ok, what):
-    global checks
-    checks += 1
-    if not ok:
-        failures.append(what)
-        print("FAILED:", what)
+check = Checks()
 
 
 def run(args):
@@ -139,5 +133,4 @@ for ext in ["off", "obj", "ply"]:
     check(open(os.path.join(OUT, "a.rosy")).read() == open(os.path.join(OUT, "b.rosy")).read(),
           "--mesh-out ." + ext + ": the same per-face field")
 
-print("%d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+check.finish()

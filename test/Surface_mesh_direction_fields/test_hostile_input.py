@@ -16,11 +16,12 @@ import struct
 import subprocess
 import sys
 
+from checks import Checks
+
 BIN, OUT = sys.argv[1], sys.argv[2]
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
-failures = []
-checks = 0
+check = Checks()
 MEMORY = 1 << 30
 
 
@@ -37,13 +38,6 @@ def run(args, timeout=60, memory_limit=True):
     return subprocess.run([BIN] + args, capture_output=True, text=True, timeout=timeout, env=env,
                           preexec_fn=limit_memory if memory_limit and LIMIT else None)
 
-
-def check(condition, what):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(what)
-        print("FAILED:", what)
 
 
 def expect_error(args, what, contains=None, timeout=60, memory_limit=True):
@@ -306,5 +300,4 @@ check(None not in results and all(abs(a - b) < 1e-9 for r in results[1:] for u, 
 r = run([mesh, "--align", "curvature", "--alignment-weight", "1e-300", "--json"])
 check(r.returncode == 0, "--alignment-weight 1e-300: %d %r" % (r.returncode, r.stderr))
 
-print("%d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+check.finish()
