@@ -1,0 +1,169 @@
+// The smallest eigenpair of the pencil (A, M) of a mesh's largest component
+// by SLEPc over the processes of mpirun, with the candidate methods of the
+// distributed backend (issue: "Beyond one machine"):
+//   krylov-schur  Krylov-Schur with shift-and-invert on a MUMPS LU factorization
+//   lobpcg        LOBPCG preconditioned by PETSc's algebraic multigrid (GAMG), no factorization
+// For each: the eigenvalue, the time, the iterations and the peak memory of
+// every process. Every process assembles A and M with the package's own
+// kernels and gives its row range to PETSc (the matrices are replicated; the
+// solver's data are split).
+//
+//   mpirun -np K build/bin/benchmark_distributed_eigensolvers MESH [METHOD...]
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+
+#include <slepceps.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SI = CGAL::Surface_mesh_direction_fields::internal;
+
+namespace {
+
+// The process's high-water mark of resident memory, in MB.
+double peak_memory_mb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.;
+  return 0.;
+}
+
+// A and M of the largest component, for n = 4 and s = 0.
+SI::Energy_and_mass largest_component_matrices(const Mesh& mesh)
+{
+  const SI::Indexed_mesh m = SI::make_indexed_mesh(
+    mesh, [&](Mesh::Vertex_index v) { const auto& p = mesh.point(v); return SI::Vec3{p.x(), p.y(), p.z()}; },
+    get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh));
+  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
+  const SI::Connection con = SI::compute_connection(m, ts, 4);
+  const SI::Components comps = SI::split_into_components(m);
+  std::size_t largest = 0;
+  for(std::size_t c = 1; c < comps.list.size(); ++c)
+    if(comps.list[c].vertices.size() > comps.list[largest].vertices.size()) largest = c;
+  return SI::assemble_energy_and_mass(m, ts, con, comps.list[largest], comps.local_index, 0.);
+}
+
+// The rows of this process of a whole (replicated) Hermitian matrix.
+Mat distributed(const SI::Complex_sparse_matrix& S)
+{
+  const PetscInt n = static_cast<PetscInt>(S.rows());
+  Mat A;
+  MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, 30, nullptr, 30, nullptr, &A);
+  PetscInt first, last;
+  MatGetOwnershipRange(A, &first, &last);
+  for(Eigen::Index col = 0; col < S.outerSize(); ++col)
+    for(SI::Complex_sparse_matrix::InnerIterator it(S, col); it; ++it)
+      if(it.row() >= first && it.row() < last)
+      {
+        const PetscInt row = static_cast<PetscInt>(it.row()), c = static_cast<PetscInt>(col);
+        const PetscScalar value = it.value();
+        MatSetValues(A, 1, &row, 1, &c, &value, INSERT_VALUES);
+      }
+  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+  MatSetOption(A, MAT_HERMITIAN, PETSC_TRUE);
+  return A;
+}
+
+void configure(EPS eps, const std::string& method)
+{
+  ST st;
+  KSP ksp;
+  PC pc;
+  EPSGetST(eps, &st);
+  STGetKSP(st, &ksp);
+  KSPGetPC(ksp, &pc);
+  if(method == "krylov-schur")
+  {
+    EPSSetType(eps, EPSKRYLOVSCHUR);
+    EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
+    EPSSetTarget(eps, 0.);
+    STSetType(st, STSINVERT);
+    KSPSetType(ksp, KSPPREONLY);
+    PCSetType(pc, PCLU);
+    PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  }
+  else  // lobpcg
+  {
+    EPSSetType(eps, EPSLOBPCG);
+    EPSSetWhichEigenpairs(eps, EPS_SMALLEST_REAL);
+    STSetType(st, STPRECOND);
+    KSPSetType(ksp, KSPPREONLY);
+    PCSetType(pc, PCGAMG);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  SlepcInitialize(&argc, &argv, nullptr, nullptr);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  {
+    Mesh mesh;
+    if(argc < 2 || !CGAL::IO::read_polygon_mesh(argv[1], mesh))
+    {
+      if(rank == 0) std::cerr << "usage: benchmark_distributed_eigensolvers MESH [krylov-schur] [lobpcg]\n";
+      SlepcFinalize();
+      return 1;
+    }
+    std::vector<std::string> methods;
+    for(int i = 2; i < argc; ++i)
+      if(argv[i][0] != '-') methods.push_back(argv[i]);
+    if(methods.empty()) methods = {"krylov-schur", "lobpcg"};
+    const SI::Energy_and_mass em = largest_component_matrices(mesh);
+    Mat A = distributed(em.energy), M = distributed(em.mass);
+    for(const std::string& method : methods)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      EPS eps;
+      EPSCreate(PETSC_COMM_WORLD, &eps);
+      EPSSetOperators(eps, A, M);
+      EPSSetProblemType(eps, EPS_GHEP);
+      EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT);
+      EPSSetTolerances(eps, 1e-10, 1000);
+      configure(eps, method);
+      EPSSetFromOptions(eps);
+      EPSSolve(eps);
+      PetscInt converged = 0, iterations = 0;
+      EPSGetConverged(eps, &converged);
+      EPSGetIterationNumber(eps, &iterations);
+      PetscScalar lambda = 0.;
+      if(converged > 0) EPSGetEigenpair(eps, 0, &lambda, nullptr, nullptr, nullptr);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      EPSDestroy(&eps);
+      std::vector<double> peaks(static_cast<std::size_t>(size));
+      const double peak = peak_memory_mb();
+      MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+      if(rank == 0)
+      {
+        std::printf("%-13s ranks %d  vertices %ld  eigenvalue %.15g  converged %ld  iterations %ld  %.0f ms  peak MB",
+                    method.c_str(), size, static_cast<long>(em.energy.rows()), PetscRealPart(lambda),
+                    static_cast<long>(converged), static_cast<long>(iterations), ms);
+        for(double p : peaks) std::printf(" %.0f", p);
+        std::printf("\n");
+      }
+    }
+    MatDestroy(&A);
+    MatDestroy(&M);
+  }
+  SlepcFinalize();
+  return 0;
+}
