@@ -83,4 +83,9 @@ for mesh, options, what in cases:
         check(sing == single_sing and d["index_sum"] == single["index_sum"],
               "%s np=%d: the same singular faces" % (tag, ranks))
 
+# PETSc's own options pass through (here: more workspace for MUMPS), with the same result
+d, sing = run(two_parts, ["--petsc-options", "-mat_mumps_icntl_14 50"], 2, "petsc_options")
+single, single_sing = run(two_parts, [], 0, "petsc_options_single")
+check(d is not None and sing == single_sing, "--petsc-options: the same singular faces")
+
 check.finish()

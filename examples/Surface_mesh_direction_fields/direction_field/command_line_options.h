@@ -38,6 +38,7 @@ struct Options
   std::string curvature_estimate = "quadric-fit";
   double feature_angle = -1.;  // negative: no feature alignment
   std::string solver = "default";
+  std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
 };
 
 // The largest degree the program accepts. The library computes any degree up
@@ -93,6 +94,8 @@ inline const Option_help option_help[] = {
   {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the factorization split over the "
                                     "processes of mpirun (mpirun -np K direction_field MESH --solver petsc; a build "
                                     "with PETSc)"},
+  {"Performance", "--petsc-options TEXT", "PETSc's own options for --solver petsc, as one argument "
+                                         "(say \"-mat_mumps_icntl_14 50 -log_view\")"},
   {"Program", "--help, -h", "this text"},
   {"Program", "--version", "the program's version"},
 };
@@ -106,6 +109,7 @@ inline const char* const usage =
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
   "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--solver default|petsc]\n"
+  "                       [--petsc-options TEXT]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -210,6 +214,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--curvature-estimate") o.curvature_estimate = v;
   else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
   else if(a == "--solver") o.solver = v;
+  else if(a == "--petsc-options") o.petsc_options = v;
   else return false;
   return true;
 }
@@ -229,6 +234,7 @@ inline void check_options(const Options& o)
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
   if(o.solver != "default" && o.solver != "petsc")
     throw Usage_error("--solver expects default or petsc, got '" + o.solver + "'");
+  if(!o.petsc_options.empty() && o.solver != "petsc") throw Usage_error("--petsc-options needs --solver petsc");
 #ifndef SMDF_WITH_PETSC
   if(o.solver == "petsc")
     throw Usage_error("--solver petsc: this build has no distributed solver (PETSc with complex scalars was not found)");

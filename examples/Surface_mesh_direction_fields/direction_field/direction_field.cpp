@@ -238,6 +238,8 @@ public:
     if(o.solver != "petsc") return;
     if(PetscInitializeNoArguments() != 0) throw Usage_error("--solver petsc: PETSc (MPI) could not start");
     m_petsc = true;
+    if(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()) != 0)
+      throw Usage_error("--petsc-options: PETSc does not accept '" + o.petsc_options + "'");
     MPI_Comm_rank(PETSC_COMM_WORLD, &m_rank);
     MPI_Comm_size(PETSC_COMM_WORLD, &m_size);
 #else
