@@ -311,6 +311,71 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
   if(expect_singularity) report.check(saw_singularity, what + ": some streamlines end at a singularity");
 }
 
+// Evenly spaced lines (Streamline_options::minimum_separation): fewer lines
+// than without, and no point of a line (but an end that says TOO_CLOSE)
+// within half the separation of an earlier line running the same way (the
+// tracer compares with samples of the earlier lines every half separation,
+// the last point of a line included only through its segment's samples, so
+// half is what it guarantees).
+static void check_streamline_separation(Test_report& report, const std::string& name, const Mesh& mesh, int degree)
+{
+  std::vector<Vector_3> storage(mesh.number_of_vertices());
+  auto dir = CGAL::make_property_map(storage);
+  std::vector<std::pair<Face_index, int> > singular;
+  SMDF::compute_globally_optimal_directions(
+    mesh, dir, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular)));
+  const SIO::Direction_field_data data = SIO::make_direction_field_data(mesh, dir, degree, singular);
+  SMDF::Streamline_options options;
+  options.seed_spacing = 0.05;
+  options.maximum_length = 0.5;
+  const std::size_t all_lines = SMDF::trace_streamlines(data, options).size();
+  options.minimum_separation = 0.08;
+  const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
+  V3 lo = data.points[0], hi = data.points[0];
+  for(const V3& p : data.points) for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
+  const double separation = options.minimum_separation * distance(lo, hi);
+  auto unit = [](const V3& a, const V3& b) {
+    const V3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    return l > 0. ? V3{e[0] / l, e[1] / l, e[2] / l} : V3{0., 0., 0.};
+  };
+  auto to_segment = [](const V3& p, const V3& a, const V3& b) {
+    const V3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    double t = ee > 0. ? ((p[0] - a[0]) * e[0] + (p[1] - a[1]) * e[1] + (p[2] - a[2]) * e[2]) / ee : 0.;
+    t = (std::max)(0., (std::min)(1., t));
+    return distance(p, V3{a[0] + t * e[0], a[1] + t * e[1], a[2] + t * e[2]});
+  };
+  double closest = HUGE_VAL;
+  bool stopped = false;
+  for(std::size_t j = 0; j < lines.size(); ++j)
+  {
+    const SMDF::Streamline& l = lines[j];
+    stopped = stopped || l.start_end == SMDF::Streamline::End::TOO_CLOSE || l.finish_end == SMDF::Streamline::End::TOO_CLOSE;
+    for(std::size_t i = 1; i < l.points.size(); ++i)
+    {
+      if(i + 1 == l.points.size() && l.finish_end == SMDF::Streamline::End::TOO_CLOSE) continue;
+      // the tracer tested the point with the direction it was moving in: the segment
+      // before it (forwards) or after it (the backward half, reversed): count a
+      // point as near a parallel line only when both its segments run parallel
+      const V3 before = unit(l.points[i - 1], l.points[i]);
+      const V3 after = i + 1 < l.points.size() ? unit(l.points[i], l.points[i + 1]) : before;
+      for(std::size_t k = 0; k < j; ++k)
+        for(std::size_t m = 0; m + 1 < lines[k].points.size(); ++m)
+        {
+          const V3 u = unit(lines[k].points[m], lines[k].points[m + 1]);
+          if(std::abs(before[0] * u[0] + before[1] * u[1] + before[2] * u[2]) > 0.9 &&
+             std::abs(after[0] * u[0] + after[1] * u[1] + after[2] * u[2]) > 0.9)
+            closest = (std::min)(closest, to_segment(l.points[i], lines[k].points[m], lines[k].points[m + 1]));
+        }
+    }
+  }
+  report.check(lines.size() < all_lines && stopped && closest >= 0.5 * separation,
+               name + " (n = " + std::to_string(degree) + "): evenly spaced lines, " + std::to_string(lines.size()) +
+                 " of " + std::to_string(all_lines) + ", closest parallel points " + std::to_string(closest / separation) +
+                 " separations apart");
+}
+
 int main()
 {
   Test_report report("io");
@@ -404,6 +469,8 @@ int main()
   check_streamlines(report, "icosphere", sphere, 4, false, true);
   check_streamlines(report, "icosphere", sphere, 1, false, true);
   check_streamlines(report, "torus", torus, 2, false, false);
+  check_streamline_separation(report, "icosphere", sphere, 4);
+  check_streamline_separation(report, "torus", torus, 2);
   {
     Mesh disk;
     make_disk(disk, 10);

@@ -288,9 +288,29 @@ static void check_hard_meshes(Test_report& report)
   }
 }
 
+// The degree's documented range: 1 to maximum_degree; beyond, a clear error.
+static void check_degree_range(Test_report& report)
+{
+  Mesh mesh;
+  make_icosphere(mesh, 1);
+  auto dir = mesh.add_property_map<Vertex_index, Vector_3>("v:direction", CGAL::NULL_VECTOR).first;
+  for(int n : {0, SMDF::maximum_degree + 1})
+  {
+    bool refused = false;
+    try { SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(n)); }
+    catch(const SMDF::Invalid_input_error&) { refused = true; }
+    report.check(refused, "degree " + std::to_string(n) + " is refused with Invalid_input_error");
+  }
+  const SMDF::Direction_field_result r =
+    SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(SMDF::maximum_degree));
+  report.check(r.index_sum == 2LL * SMDF::maximum_degree,
+               "degree maximum_degree: the index sum n chi = " + std::to_string(2LL * SMDF::maximum_degree) + " exactly");
+}
+
 int main()
 {
   Test_report report("robustness");
+  check_degree_range(report);
   check_models(report);
   check_hard_meshes(report);
   return report.finish();
