@@ -188,6 +188,25 @@ static void check_round_trips(Test_report& report, const std::string& name, cons
                what + ": face directions are in the face plane and independent of each vertex's first direction");
 }
 
+// The smoothest field of `mesh` as the arrays the field lines read (the
+// separation check; check_streamlines() also needs the property maps).
+static SIO::Direction_field_data smoothest_field_data(const Mesh& mesh, int degree)
+{
+  std::vector<Vector_3> storage(mesh.number_of_vertices());
+  auto dir = CGAL::make_property_map(storage);
+  std::vector<std::pair<Face_index, int> > singular;
+  SMDF::compute_globally_optimal_directions(
+    mesh, dir, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular)));
+  return SIO::make_direction_field_data(mesh, dir, degree, singular);
+}
+
+static double bounding_box_diagonal(const SIO::Direction_field_data& data)
+{
+  V3 lo = data.points[0], hi = data.points[0];
+  for(const V3& p : data.points) for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
+  return distance(lo, hi);
+}
+
 // Streamlines: on the surface, along the per-face field, never inside a
 // singular face, ending where they say they end.
 static void check_streamlines(Test_report& report, const std::string& name, const Mesh& mesh, int degree,
@@ -205,9 +224,7 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
   const std::string what = name + " (n = " + std::to_string(degree) + ")";
 
-  V3 lo = data.points[0], hi = data.points[0];
-  for(const V3& p : data.points) for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
-  const double diagonal = distance(lo, hi);
+  const double diagonal = bounding_box_diagonal(data);
   std::vector<char> is_singular(data.faces.size(), 0);
   for(const auto& s : data.singularities) is_singular[s.first] = 1;
   // boundary edges and edges of singular faces, as vertex pairs
@@ -319,21 +336,14 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
 // half is what it guarantees).
 static void check_streamline_separation(Test_report& report, const std::string& name, const Mesh& mesh, int degree)
 {
-  std::vector<Vector_3> storage(mesh.number_of_vertices());
-  auto dir = CGAL::make_property_map(storage);
-  std::vector<std::pair<Face_index, int> > singular;
-  SMDF::compute_globally_optimal_directions(
-    mesh, dir, CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular)));
-  const SIO::Direction_field_data data = SIO::make_direction_field_data(mesh, dir, degree, singular);
+  const SIO::Direction_field_data data = smoothest_field_data(mesh, degree);
   SMDF::Streamline_options options;
   options.seed_spacing = 0.05;
   options.maximum_length = 0.5;
   const std::size_t all_lines = SMDF::trace_streamlines(data, options).size();
   options.minimum_separation = 0.08;
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
-  V3 lo = data.points[0], hi = data.points[0];
-  for(const V3& p : data.points) for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], p[k]); hi[k] = (std::max)(hi[k], p[k]); }
-  const double separation = options.minimum_separation * distance(lo, hi);
+  const double separation = options.minimum_separation * bounding_box_diagonal(data);
   auto unit = [](const V3& a, const V3& b) {
     const V3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);

@@ -311,6 +311,13 @@ struct VTK_layout
     for(const auto& t : data.faces) faces.push_back({number[t[0]], number[t[1]], number[t[2]]});
   }
 
+  long long vertices() const { return static_cast<long long>(used.size()); }
+  long long triangles() const { return static_cast<long long>(faces.size()); }
+  static long long singular_points(const Direction_field_data& data)
+  {
+    return static_cast<long long>(data.singularities.size());
+  }
+
   // f(point, normal, singularity index, i) for every written point.
   template <typename F>
   void for_each_point(const Direction_field_data& data, const F& f) const
@@ -411,8 +418,7 @@ the same doubles.
 inline void write_VTK(std::ostream& os, const Direction_field_data& data)
 {
   const internal::VTK_layout layout(data);
-  const long long nv = static_cast<long long>(layout.used.size());
-  const long long ns = static_cast<long long>(data.singularities.size()), nf = static_cast<long long>(layout.faces.size());
+  const long long nv = layout.vertices(), ns = layout.singular_points(data), nf = layout.triangles();
   internal::Number_writer w(os);
   w.text("# vtk DataFile Version 3.0\ndirection field of degree ").integer(data.degree)
     .text(" (CGAL Surface_mesh_direction_fields)\nASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n")
@@ -468,8 +474,7 @@ the active scalars, vectors and normals.
 inline void write_VTU(std::ostream& os, const Direction_field_data& data)
 {
   const internal::VTK_layout layout(data);
-  const long long nv = static_cast<long long>(layout.used.size());
-  const long long ns = static_cast<long long>(data.singularities.size()), nf = static_cast<long long>(layout.faces.size());
+  const long long nv = layout.vertices(), ns = layout.singular_points(data), nf = layout.triangles();
   internal::Number_writer w(os);
   w.text("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
          "<UnstructuredGrid>\n<FieldData>\n"
