@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
@@ -80,7 +81,35 @@ Mat distributed(const SI::Complex_sparse_matrix& S)
   return A;
 }
 
-void configure(EPS eps, const std::string& method)
+// A + epsilon M, positive definite, with the near-null vector `near_null`
+// (empty: none) for GAMG's aggregation.
+Mat shifted_with_near_null_space(Mat A, Mat M, double epsilon, const SI::Complex_vector& near_null)
+{
+  Mat P;
+  MatDuplicate(A, MAT_COPY_VALUES, &P);
+  MatAXPY(P, epsilon, M, SAME_NONZERO_PATTERN);
+  MatSetOption(P, MAT_HERMITIAN, PETSC_TRUE);
+  if(near_null.size() > 0)
+  {
+    Vec v;
+    MatCreateVecs(P, &v, nullptr);
+    PetscInt first, last;
+    VecGetOwnershipRange(v, &first, &last);
+    PetscScalar* values;
+    VecGetArray(v, &values);
+    for(PetscInt i = first; i < last; ++i) values[i - first] = near_null[static_cast<Eigen::Index>(i)];
+    VecRestoreArray(v, &values);
+    VecNormalize(v, nullptr);
+    MatNullSpace space;
+    MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, 1, &v, &space);
+    MatSetNearNullSpace(P, space);
+    MatNullSpaceDestroy(&space);
+    VecDestroy(&v);
+  }
+  return P;
+}
+
+void configure(EPS eps, const std::string& method, Mat P, double epsilon)
 {
   ST st;
   KSP ksp;
@@ -88,7 +117,27 @@ void configure(EPS eps, const std::string& method)
   EPSGetST(eps, &st);
   STGetKSP(st, &ksp);
   KSPGetPC(ksp, &pc);
-  if(method == "krylov-schur")
+  if(method.rfind("ks-cg-gamg", 0) == 0)  // inexact shift-and-invert: CG on A + epsilon M
+  {
+    EPSSetType(eps, EPSKRYLOVSCHUR);
+    EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
+    EPSSetTarget(eps, -epsilon);
+    STSetType(st, STSINVERT);
+    STSetPreconditionerMat(st, P);
+    KSPSetType(ksp, KSPCG);
+    KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, 10000);
+    PCSetType(pc, PCGAMG);
+  }
+  else if(method.rfind("lobpcg-gamg", 0) == 0)
+  {
+    EPSSetType(eps, EPSLOBPCG);
+    EPSSetWhichEigenpairs(eps, EPS_SMALLEST_REAL);
+    STSetType(st, STPRECOND);
+    STSetPreconditionerMat(st, P);
+    KSPSetType(ksp, KSPPREONLY);
+    PCSetType(pc, PCGAMG);
+  }
+  else if(method == "krylov-schur")
   {
     EPSSetType(eps, EPSKRYLOVSCHUR);
     EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
@@ -129,17 +178,52 @@ int main(int argc, char** argv)
       if(argv[i][0] != '-') methods.push_back(argv[i]);
     if(methods.empty()) methods = {"krylov-schur", "lobpcg"};
     const SI::Energy_and_mass em = largest_component_matrices(mesh);
-    Mat A = distributed(em.energy), M = distributed(em.mass);
+    const double epsilon = 1e-8 * SI::eigenvalue_scale(em.energy, em.mass);
     for(const std::string& method : methods)
     {
       const auto start = std::chrono::steady_clock::now();
+      // "-gauge" methods: the unknowns are rotated by the phases of the
+      // package's coarse estimate b of the eigenvector (A' = D^* A D with
+      // D = diag(b_i / |b_i|)), so that the real vector |b| is a near-null
+      // vector of A' and GAMG's prolongation stays real: PETSc's multigrid
+      // restricts with the transpose, not the adjoint, so a complex
+      // prolongation would make the preconditioner non-Hermitian.
+      const bool gauge = method.size() > 6 && method.compare(method.size() - 6, 6, "-gauge") == 0;
+      SI::Complex_vector estimate, phase, modulus;
+      SI::Complex_sparse_matrix energy = em.energy, mass = em.mass;
+      if(gauge)
+      {
+        SI::Eigen_solve_options options;
+        estimate = SI::coarse_estimate<CGAL::Surface_mesh_direction_fields::Default_direction_field_solver>(
+                     em.energy, em.mass, true, options).vector;
+        phase = estimate.unaryExpr([](const SI::Complex& z) { return SI::unit(z); });
+        modulus = estimate.cwiseAbs().cast<SI::Complex>();
+        for(SI::Complex_sparse_matrix* S : {&energy, &mass})
+          for(Eigen::Index col = 0; col < S->outerSize(); ++col)
+            for(SI::Complex_sparse_matrix::InnerIterator it(*S, col); it; ++it)
+              it.valueRef() *= std::conj(phase[it.row()]) * phase[col];
+      }
+      Mat A = distributed(energy), M = distributed(mass);
       EPS eps;
       EPSCreate(PETSC_COMM_WORLD, &eps);
       EPSSetOperators(eps, A, M);
       EPSSetProblemType(eps, EPS_GHEP);
       EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT);
       EPSSetTolerances(eps, 1e-10, 1000);
-      configure(eps, method);
+      Mat P = shifted_with_near_null_space(A, M, epsilon, modulus);
+      configure(eps, method, P, epsilon);
+      if(gauge)
+      {
+        Vec v;
+        MatCreateVecs(A, &v, nullptr);
+        PetscInt first, last;
+        VecGetOwnershipRange(v, &first, &last);
+        for(PetscInt i = first; i < last; ++i) VecSetValue(v, i, modulus[static_cast<Eigen::Index>(i)], INSERT_VALUES);
+        VecAssemblyBegin(v);
+        VecAssemblyEnd(v);
+        EPSSetInitialSpace(eps, 1, &v);
+        VecDestroy(&v);
+      }
       EPSSetFromOptions(eps);
       EPSSolve(eps);
       PetscInt converged = 0, iterations = 0;
@@ -149,6 +233,9 @@ int main(int argc, char** argv)
       if(converged > 0) EPSGetEigenpair(eps, 0, &lambda, nullptr, nullptr, nullptr);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       EPSDestroy(&eps);
+      MatDestroy(&P);
+      MatDestroy(&A);
+      MatDestroy(&M);
       std::vector<double> peaks(static_cast<std::size_t>(size));
       const double peak = peak_memory_mb();
       MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
@@ -161,8 +248,6 @@ int main(int argc, char** argv)
         std::printf("\n");
       }
     }
-    MatDestroy(&A);
-    MatDestroy(&M);
   }
   SlepcFinalize();
   return 0;

@@ -1,0 +1,200 @@
+// The smoothest field (n = 4) of a mesh's largest component over the
+// processes of mpirun, on the distributed path (issue: "Beyond one
+// machine"): the mesh only on rank 0, the rows of A and M assembled by each
+// process from its faces (internal/Method/distributed_assembly.h), the
+// eigenpair by LOBPCG with GAMG in the gauge of a local estimate
+// (internal/Linear_algebra/distributed_eigen_solve.h), the eigenvector
+// gathered on rank 0. Prints the time of each step, the peak resident memory
+// of every process, the edge cut and the singular faces.
+//
+//   mpirun -np K build/bin/benchmark_distributed_field MESH [--single] [--compare] [PETSc options]
+//
+// --single runs the package's single-process eigen-solve instead (the
+// reference for time and memory, one process); --compare runs it as well,
+// after the distributed one, on rank 0, and prints the relative difference
+// of the eigenvalues and whether the singular faces are the same.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iterator>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SI = CGAL::Surface_mesh_direction_fields::internal;
+typedef CGAL::Surface_mesh_direction_fields::Default_direction_field_solver Solver;
+typedef std::chrono::steady_clock Clock;
+
+namespace {
+
+double peak_memory_mb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.;
+  return 0.;
+}
+
+double ms_since(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The mesh data of rank 0: the indexed mesh, its tangent spaces and
+// connection for n = 4, and the largest component.
+struct Mesh_data
+{
+  SI::Indexed_mesh m;
+  SI::Tangent_spaces ts;
+  SI::Connection con;
+  SI::Components comps;
+  std::size_t largest = 0;
+
+  explicit Mesh_data(const Mesh& mesh)
+    : m(SI::make_indexed_mesh(
+        mesh, [&](Mesh::Vertex_index v) { const auto& p = mesh.point(v); return SI::Vec3{p.x(), p.y(), p.z()}; },
+        get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh))),
+      ts(SI::compute_tangent_spaces(m)), con(SI::compute_connection(m, ts, 4)), comps(SI::split_into_components(m))
+  {
+    for(std::size_t c = 1; c < comps.list.size(); ++c)
+      if(comps.list[c].vertices.size() > comps.list[largest].vertices.size()) largest = c;
+  }
+  const SI::Component& component() const { return comps.list[largest]; }
+
+  // The faces of nonzero index of the field given on the component's vertices.
+  std::vector<std::size_t> singular_faces(const SI::Complex_vector& x) const
+  {
+    std::vector<std::complex<double> > u(m.number_of_vertices(), std::complex<double>(0., 0.));
+    for(std::size_t i = 0; i < component().vertices.size(); ++i) u[component().vertices[i]] = x[static_cast<Eigen::Index>(i)];
+    const std::vector<int> index = SI::face_indices(m, con, u);
+    std::vector<std::size_t> singular;
+    for(std::size_t f : component().faces)
+      if(index[f] != 0) singular.push_back(f);
+    return singular;
+  }
+};
+
+struct Single_result
+{
+  double eigenvalue = 0., ms = 0.;
+  SI::Complex_vector vector;
+};
+
+Single_result single_process(const Mesh_data& data)
+{
+  const auto start = Clock::now();
+  const SI::Energy_and_mass em = SI::assemble_energy_and_mass(data.m, data.ts, data.con, data.component(), data.comps.local_index, 0.);
+  Solver solver;
+  SI::Factored_matrix<Solver> factored(solver);
+  SI::Eigen_solve_result r = SI::smallest_eigenpair(em.energy, em.mass, factored, SI::Eigen_solve_options());
+  Single_result result;
+  result.ms = ms_since(start);
+  result.eigenvalue = r.eigenvalue;
+  result.vector.swap(r.vector);
+  return result;
+}
+
+void print_peaks(int rank, int size)
+{
+  std::vector<double> peaks(static_cast<std::size_t>(size));
+  const double peak = peak_memory_mb();
+  MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  if(rank != 0) return;
+  std::printf("  peak MB per rank:");
+  for(double p : peaks) std::printf(" %.0f", p);
+  std::printf("\n");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  SlepcInitialize(&argc, &argv, nullptr, nullptr);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  bool single = false, compare = false;
+  for(int i = 2; i < argc; ++i)
+  {
+    single = single || std::strcmp(argv[i], "--single") == 0;
+    compare = compare || std::strcmp(argv[i], "--compare") == 0;
+  }
+  {
+    std::unique_ptr<Mesh_data> data;
+    int ok = 1;
+    const auto start = Clock::now();
+    if(rank == 0)
+    {
+      Mesh mesh;
+      ok = argc >= 2 && CGAL::IO::read_polygon_mesh(argv[1], mesh) && !is_empty(mesh);
+      if(ok)
+      {
+        const double read_ms = ms_since(start);
+        const auto setup = Clock::now();
+        data.reset(new Mesh_data(mesh));
+        std::printf("%s  ranks %d  vertices %zu  faces %zu  read %.0f ms  tangent spaces and connection %.0f ms\n",
+                    argv[1], size, data->component().vertices.size(), data->component().faces.size(), read_ms, ms_since(setup));
+      }
+      else
+        std::fprintf(stderr, "usage: benchmark_distributed_field MESH [--single] [--compare]\n");
+    }
+    MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    if(ok && single && rank == 0)
+    {
+      const Single_result r = single_process(*data);
+      std::printf("  single process: eigenvalue %.15g  %.0f ms  singular faces %zu\n", r.eigenvalue, r.ms,
+                  data->singular_faces(r.vector).size());
+    }
+    if(ok && !single)
+    {
+      SI::Assembly_source source;
+      if(rank == 0) source = {&data->m, &data->ts, &data->con, &data->component(), &data->comps.local_index};
+      const auto t0 = Clock::now();
+      SI::Distributed_matrices matrices = SI::assemble_distributed(PETSC_COMM_WORLD, source, 0.);
+      const double assembly_ms = ms_since(t0);
+      const auto t1 = Clock::now();
+      SI::Distributed_eigen_solve_result r =
+        SI::distributed_smallest_eigenpair<Solver>(matrices.energy, matrices.mass, SI::Distributed_eigen_solve_options());
+      const double solve_ms = ms_since(t1);
+      const auto t2 = Clock::now();
+      const SI::Complex_vector x = r.converged ? SI::gather_on_first_process(r.vector) : SI::Complex_vector();
+      const double gather_ms = ms_since(t2);
+      if(r.vector) VecDestroy(&r.vector);
+      matrices.destroy();
+      if(rank == 0)
+        std::printf("  distributed: eigenvalue %.15g  converged %d  iterations %ld  assembly %.0f ms  solve %.0f ms  "
+                    "gather %.0f ms  total %.0f ms  cut edges %zu  singular faces %zu\n",
+                    r.eigenvalue, int(r.converged), long(r.iterations), assembly_ms, solve_ms, gather_ms,
+                    assembly_ms + solve_ms + gather_ms, matrices.cut_edges,
+                    r.converged ? data->singular_faces(x).size() : std::size_t(0));
+      print_peaks(rank, size);
+      if(compare && rank == 0 && r.converged)
+      {
+        const Single_result s = single_process(*data);
+        const std::vector<std::size_t> mine = data->singular_faces(x), theirs = data->singular_faces(s.vector);
+        std::vector<std::size_t> differing;
+        std::set_symmetric_difference(mine.begin(), mine.end(), theirs.begin(), theirs.end(), std::back_inserter(differing));
+        std::printf("  single process: eigenvalue %.15g  %.0f ms  relative difference %.2e  singular faces not in both %zu\n",
+                    s.eigenvalue, s.ms, std::abs(r.eigenvalue - s.eigenvalue) / s.eigenvalue, differing.size());
+      }
+    }
+    else
+      print_peaks(rank, size);
+  }
+  SlepcFinalize();
+  return 0;
+}

@@ -1,0 +1,453 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+// The smallest eigenpair of a Hermitian pencil (A, M) whose rows are spread
+// over MPI processes (PETSc matrices), without a factorization of the whole
+// matrix: LOBPCG (SLEPc) preconditioned by smoothed-aggregation multigrid
+// (PETSc's GAMG) on A + epsilon M (user manual, section "Several Processes").
+//
+// GAMG builds its coarse spaces from a near-null vector, by default the
+// constant one. For a connection Laplacian the fields of nearly zero energy
+// are the locally parallel ones, whose coefficients turn from vertex to
+// vertex with the transport: the constant vector is far from them, and GAMG
+// then barely helps. Giving GAMG a complex near-null vector does not work
+// either: PETSc's multigrid restricts with the transpose of the prolongation,
+// not its adjoint, so a complex prolongation makes the preconditioner
+// non-Hermitian. Hence a change of gauge: with a rough estimate b of the
+// eigenvector and the unit phases d_i = b_i / |b_i|, the pencil
+// (D^* A D, D^* M D), D = diag(d), has the same eigenvalues, eigenvectors
+// D^* x, and the real vector |b| as a near-null vector: GAMG's prolongation
+// stays real. Each process estimates b on its own block of the pencil (the
+// rows and columns of its vertices, the couplings to other processes left
+// out) with the package's coarse estimate, so no process needs more than its
+// part.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+struct Distributed_eigen_solve_options
+{
+  double relative_shift = 1e-8;  // epsilon = relative_shift * trace(A) / trace(M), as in eigen_solve.h
+  double residual_tolerance = 1e-10;  // on ||A x - lambda M x|| / (trace(A) / trace(M) ||M x||), as eigen_solve.h
+  PetscInt max_iterations = 10000;
+  // The estimates of the processes agree poorly where their blocks meet
+  // (each is the field of its own piece of surface, whose singularities may
+  // lie elsewhere), and GAMG built in their gauge lets the residual fall by
+  // only a few percent per step once it is small: the iteration stops at
+  // this residual (or after this many steps) and starts again, with a new
+  // GAMG, in the gauge of its iterate.
+  double regauge_tolerance = 1e-8;
+  PetscInt regauge_iterations = 40;
+  bool slepc_lobpcg = false;  // SLEPc's LOBPCG instead of the package's (for measurements)
+};
+
+struct Distributed_eigen_solve_result
+{
+  bool converged = false;
+  double eigenvalue = 0.;
+  PetscInt iterations = 0;
+  double residual = 0.;
+  Vec vector = nullptr;  // distributed like A's rows; the caller destroys it
+};
+
+// This process's diagonal block of a PETSc matrix (rows and columns of its
+// range) as a compressed-column Eigen matrix.
+inline Complex_sparse_matrix local_diagonal_block(Mat S)
+{
+  Mat block;
+  MatGetDiagonalBlock(S, &block);
+  PetscInt rows, columns;
+  MatGetSize(block, &rows, &columns);
+  std::vector<Eigen::Triplet<Complex> > entries;
+  for(PetscInt r = 0; r < rows; ++r)
+  {
+    PetscInt count;
+    const PetscInt* cols;
+    const PetscScalar* values;
+    MatGetRow(block, r, &count, &cols, &values);
+    for(PetscInt k = 0; k < count; ++k) entries.emplace_back(r, cols[k], values[k]);
+    MatRestoreRow(block, r, &count, &cols, &values);
+  }
+  Complex_sparse_matrix result(rows, columns);
+  result.setFromTriplets(entries.begin(), entries.end());
+  return result;
+}
+
+// A rough estimate of the smallest eigenvector of this process's block:
+// the coarse estimate (aggregation levels, smoothed), or, when the block is
+// too small for aggregation to pay, its smallest eigenvector to a loose
+// tolerance.
+template <typename SparseSolver>
+Complex_vector local_eigenvector_estimate(Mat A, Mat M)
+{
+  const Complex_sparse_matrix A_local = local_diagonal_block(A), M_local = local_diagonal_block(M);
+  if(A_local.rows() == 0) return Complex_vector();
+  Eigen_solve_options options;
+  options.residual_tolerance = options.coarse_tolerance;
+  Coarse_estimate coarse =
+    coarse_estimate<SparseSolver>(A_local, M_local, have_same_pattern(A_local, M_local), options);
+  if(coarse.vector.size() == A_local.rows()) return coarse.vector;
+  SparseSolver solver;
+  Factored_matrix<SparseSolver> factored(solver);
+  try
+  {
+    return smallest_eigenpair(A_local, M_local, factored, options).vector;
+  }
+  catch(const Solver_failure_error&)
+  {
+    return Complex_vector::Ones(A_local.rows());
+  }
+}
+
+// A new vector laid out like the rows of S, with this process's entries.
+inline Vec vector_like(Mat S, const Complex_vector& local)
+{
+  Vec v;
+  MatCreateVecs(S, &v, nullptr);
+  PetscScalar* values;
+  VecGetArray(v, &values);
+  for(Eigen::Index i = 0; i < local.size(); ++i) values[i] = local[i];
+  VecRestoreArray(v, &values);
+  return v;
+}
+
+// The estimates of the processes are each right up to a factor of their
+// own (a phase and a scale), which leaves jumps at the borders between
+// processes. The factors c_r that make sum_r c_r b_r best are the smallest
+// eigenvector of the pencil projected onto the pieces b_r (one per process,
+// zero elsewhere): a Rayleigh-Ritz step on K vectors, K products with A
+// and M. Returns this process's piece times its factor.
+inline Complex_vector aligned_across_processes(Mat A, Mat M, const Complex_vector& local)
+{
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
+  int processes, rank;
+  MPI_Comm_size(comm, &processes);
+  MPI_Comm_rank(comm, &rank);
+  if(processes == 1) return local;
+  Eigen::MatrixXcd projected_a(processes, processes), projected_m(processes, processes);
+  Vec piece, product;
+  MatCreateVecs(A, &piece, &product);
+  for(int s = 0; s < processes; ++s)
+  {
+    PetscScalar* values;
+    VecGetArray(piece, &values);
+    for(Eigen::Index i = 0; i < local.size(); ++i) values[i] = rank == s ? local[i] : Complex(0., 0.);
+    VecRestoreArray(piece, &values);
+    for(int which = 0; which < 2; ++which)
+    {
+      MatMult(which == 0 ? A : M, piece, product);  // row r of column s: b_r^* (S b_s), summed on process r
+      const PetscScalar* p;
+      VecGetArrayRead(product, &p);
+      Complex mine(0., 0.);
+      for(Eigen::Index i = 0; i < local.size(); ++i) mine += std::conj(local[i]) * p[i];
+      VecRestoreArrayRead(product, &p);
+      Eigen::MatrixXcd& projected = which == 0 ? projected_a : projected_m;
+      MPI_Allgather(&mine, 1, MPI_C_DOUBLE_COMPLEX, projected.col(s).data(), 1, MPI_C_DOUBLE_COMPLEX, comm);
+    }
+  }
+  VecDestroy(&piece);
+  VecDestroy(&product);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> ritz((projected_a + projected_a.adjoint()) / 2.,
+                                                                  (projected_m + projected_m.adjoint()) / 2.);
+  if(ritz.info() != Eigen::Success) return local;
+  return local * ritz.eigenvectors().col(0)[rank];
+}
+
+// A + epsilon M, with the near-null vector `near_null` for GAMG.
+inline Mat shifted_preconditioner_matrix(Mat A, Mat M, double epsilon, Vec near_null)
+{
+  Mat P;
+  MatDuplicate(A, MAT_COPY_VALUES, &P);
+  MatAXPY(P, epsilon, M, SAME_NONZERO_PATTERN);
+  MatSetOption(P, MAT_HERMITIAN, PETSC_TRUE);
+  MatNullSpace space;
+  MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), PETSC_FALSE, 1, &near_null, &space);
+  MatSetNearNullSpace(P, space);
+  MatNullSpaceDestroy(&space);
+  return P;
+}
+
+// LOBPCG on (A, M) preconditioned by GAMG on P, started from `start`; PETSc's
+// options (-eps_*, -st_*) given at run time override these choices.
+inline Distributed_eigen_solve_result lobpcg_with_multigrid(Mat A, Mat M, Mat P, Vec start,
+                                                            const Distributed_eigen_solve_options& options)
+{
+  Distributed_eigen_solve_result result;
+  EPS eps;
+  ST st;
+  KSP ksp;
+  PC pc;
+  EPSCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &eps);
+  EPSSetOperators(eps, A, M);
+  EPSSetProblemType(eps, EPS_GHEP);
+  EPSSetType(eps, EPSLOBPCG);
+  EPSSetWhichEigenpairs(eps, EPS_SMALLEST_REAL);
+  EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT);
+  EPSSetTolerances(eps, options.residual_tolerance, options.max_iterations);
+  EPSGetST(eps, &st);
+  STSetType(st, STPRECOND);
+  STSetPreconditionerMat(st, P);
+  STGetKSP(st, &ksp);
+  KSPSetType(ksp, KSPPREONLY);
+  KSPGetPC(ksp, &pc);
+  PCSetType(pc, PCGAMG);
+  EPSSetInitialSpace(eps, 1, &start);
+  EPSSetFromOptions(eps);
+  PetscInt converged = 0;
+  if(EPSSolve(eps) == 0 && EPSGetConverged(eps, &converged) == 0 && converged > 0)
+  {
+    PetscScalar lambda;
+    MatCreateVecs(A, &result.vector, nullptr);
+    EPSGetEigenpair(eps, 0, &lambda, nullptr, result.vector, nullptr);
+    result.eigenvalue = PetscRealPart(lambda);
+    result.converged = true;
+  }
+  EPSGetIterationNumber(eps, &result.iterations);
+  EPSDestroy(&eps);
+  return result;
+}
+
+// The multigrid preconditioner: one V-cycle of GAMG on P (options prefix
+// "st_", as for SLEPc's spectral transformation).
+inline KSP multigrid_preconditioner(Mat P)
+{
+  KSP ksp;
+  PC pc;
+  KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(P)), &ksp);
+  KSPSetOperators(ksp, P, P);
+  KSPSetType(ksp, KSPPREONLY);
+  KSPGetPC(ksp, &pc);
+  PCSetType(pc, PCGAMG);
+  KSPSetOptionsPrefix(ksp, "st_");
+  KSPSetFromOptions(ksp);
+  KSPSetUp(ksp);
+  return ksp;
+}
+
+// LOBPCG for one vector (Knyazev's locally optimal block preconditioned
+// conjugate gradient with a block of one): each step is a Rayleigh-Ritz
+// projection of (A, M) onto span{x, w, p}, with x the current vector, w the
+// preconditioned residual and p the previous step. SLEPc's LOBPCG does the
+// same with general blocks and pays for it on every step (its basis
+// operations cost several times the multigrid cycle: see benchmark/), so the
+// package keeps this one, whose step is one cycle, two products and six
+// reductions.
+class Single_vector_lobpcg
+{
+public:
+  Single_vector_lobpcg(Mat A, Mat M, KSP preconditioner) : m_A(A), m_M(M), m_preconditioner(preconditioner)
+  {
+    for(Vec* v : {&m_S[0], &m_S[1], &m_S[2], &m_AS[0], &m_AS[1], &m_AS[2], &m_MS[0], &m_MS[1], &m_MS[2], &m_r})
+      MatCreateVecs(A, v, nullptr);
+  }
+  ~Single_vector_lobpcg()
+  {
+    for(Vec* v : {&m_S[0], &m_S[1], &m_S[2], &m_AS[0], &m_AS[1], &m_AS[2], &m_MS[0], &m_MS[1], &m_MS[2], &m_r})
+      VecDestroy(v);
+  }
+  Single_vector_lobpcg(const Single_vector_lobpcg&) = delete;
+  Single_vector_lobpcg& operator=(const Single_vector_lobpcg&) = delete;
+
+  Distributed_eigen_solve_result run(Vec start, double scale, const Distributed_eigen_solve_options& options)
+  {
+    Distributed_eigen_solve_result result;
+    VecCopy(start, m_S[0]);
+    set_products(0);
+    normalize(0);
+    std::size_t size = 1;  // x, then w, then p once there is a previous step
+    for(result.iterations = 0; result.iterations <= options.max_iterations; ++result.iterations)
+    {
+      result.eigenvalue = PetscRealPart(dot(m_AS[0], m_S[0]));
+      VecWAXPY(m_r, -result.eigenvalue, m_MS[0], m_AS[0]);  // r = A x - lambda M x
+      PetscReal r_norm, mx_norm;
+      VecNorm(m_r, NORM_2, &r_norm);
+      VecNorm(m_MS[0], NORM_2, &mx_norm);
+      result.residual = r_norm / (scale * mx_norm);
+      if(!(result.residual > options.residual_tolerance))
+      {
+        result.converged = result.residual <= options.residual_tolerance;
+        break;
+      }
+      KSPSolve(m_preconditioner, m_r, m_S[1]);  // w
+      set_products(1);
+      normalize(1);
+      size = (std::max)(size, std::size_t(2));
+      if(!step(size) && (size < 3 || !step(size = 2))) break;  // without p when the basis is dependent
+      size = 3;
+    }
+    MatCreateVecs(m_A, &result.vector, nullptr);  // the last iterate, converged or not
+    VecCopy(m_S[0], result.vector);
+    return result;
+  }
+
+private:
+  PetscScalar dot(Vec a, Vec b) const
+  {
+    PetscScalar value;
+    VecDot(a, b, &value);  // b^* a
+    return value;
+  }
+  void set_products(std::size_t k)
+  {
+    MatMult(m_A, m_S[k], m_AS[k]);
+    MatMult(m_M, m_S[k], m_MS[k]);
+  }
+  void normalize(std::size_t k)
+  {
+    const double norm = std::sqrt((std::max)(0., PetscRealPart(dot(m_MS[k], m_S[k]))));
+    if(norm > 0.)
+      for(Vec v : {m_S[k], m_AS[k], m_MS[k]}) VecScale(v, 1. / norm);
+  }
+  // The Rayleigh-Ritz step on the first `size` basis vectors: x and its
+  // products become the best Ritz vector, p the part of it outside x.
+  // Returns false if the basis' Gram matrix (of M) is not safely positive
+  // definite.
+  bool step(std::size_t size)
+  {
+    typedef Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> Small;
+    Small GA(size, size), GM(size, size);
+    std::vector<PetscScalar> column(size);
+    for(std::size_t j = 0; j < size; ++j)
+    {
+      VecMDot(m_AS[j], static_cast<PetscInt>(size), m_S, column.data());  // column[i] = s_i^* A s_j
+      for(std::size_t i = 0; i < size; ++i) GA(i, j) = column[i];
+      VecMDot(m_MS[j], static_cast<PetscInt>(size), m_S, column.data());
+      for(std::size_t i = 0; i < size; ++i) GM(i, j) = column[i];
+    }
+    GA = (GA + GA.adjoint()) / 2.;
+    GM = (GM + GM.adjoint()) / 2.;
+    Eigen::SelfAdjointEigenSolver<Small> gram(GM);
+    if(gram.eigenvalues().minCoeff() <= 1e-12 * gram.eigenvalues().maxCoeff()) return false;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Small> ritz(GA, GM);
+    if(ritz.info() != Eigen::Success) return false;
+    Eigen::Matrix<Complex, Eigen::Dynamic, 1> c = ritz.eigenvectors().col(0);
+    // p = c_1 w + c_2 p (and its products), then x = c_0 x + p
+    for(Vec* family : {m_S, m_AS, m_MS})
+    {
+      if(size == 3)
+        VecScale(family[2], c[2]);
+      else
+        VecSet(family[2], 0.);
+      VecAXPY(family[2], c[1], family[1]);
+      VecAXPBY(family[0], 1., c[0], family[2]);
+    }
+    return true;
+  }
+
+  Mat m_A, m_M;
+  KSP m_preconditioner;
+  Vec m_S[3], m_AS[3], m_MS[3], m_r;
+};
+
+// The smallest eigenpair of (A, M), both Hermitian with the same pattern and
+// row distribution, in the gauge of `estimate` (this process's entries of a
+// rough eigenvector; see the note at the top). A and M are rotated into that
+// gauge and back; the eigenvector is returned in the original gauge.
+inline Distributed_eigen_solve_result smallest_eigenpair_in_gauge(Mat A, Mat M, const Complex_vector& estimate,
+                                                                  const Distributed_eigen_solve_options& options)
+{
+  const Complex_vector phase = estimate.unaryExpr([](const Complex& z) { return unit(z); });
+  Vec d = vector_like(A, phase), d_conjugate, modulus = vector_like(A, estimate.cwiseAbs().cast<Complex>());
+  VecNormalize(modulus, nullptr);
+  VecDuplicate(d, &d_conjugate);
+  VecCopy(d, d_conjugate);
+  VecConjugate(d_conjugate);
+  MatDiagonalScale(A, d_conjugate, d);
+  MatDiagonalScale(M, d_conjugate, d);
+  PetscScalar trace_a, trace_m;
+  MatGetTrace(A, &trace_a);
+  MatGetTrace(M, &trace_m);
+  const double scale = PetscRealPart(trace_a) / PetscRealPart(trace_m);
+  Mat P = shifted_preconditioner_matrix(A, M, options.relative_shift * scale, modulus);
+  Distributed_eigen_solve_result result;
+  if(options.slepc_lobpcg)
+    result = lobpcg_with_multigrid(A, M, P, modulus, options);
+  else
+  {
+    KSP preconditioner = multigrid_preconditioner(P);
+    Single_vector_lobpcg lobpcg(A, M, preconditioner);
+    result = lobpcg.run(modulus, scale, options);
+    KSPDestroy(&preconditioner);
+  }
+  if(result.vector) VecPointwiseMult(result.vector, result.vector, d);  // back to the original gauge
+  MatDiagonalScale(A, d, d_conjugate);
+  MatDiagonalScale(M, d, d_conjugate);
+  MatDestroy(&P);
+  VecDestroy(&modulus);
+  VecDestroy(&d_conjugate);
+  VecDestroy(&d);
+  return result;
+}
+
+// The smallest eigenpair of (A, M) in the gauge of the processes' own
+// estimates, aligned.
+template <typename SparseSolver>
+Distributed_eigen_solve_result distributed_smallest_eigenpair(Mat A, Mat M, const Distributed_eigen_solve_options& options)
+{
+  const Complex_vector estimate = aligned_across_processes(A, M, local_eigenvector_estimate<SparseSolver>(A, M));
+  Distributed_eigen_solve_options first_options = options;
+  first_options.residual_tolerance = (std::max)(options.residual_tolerance, options.regauge_tolerance);
+  first_options.max_iterations = (std::min)(options.max_iterations, options.regauge_iterations);
+  Distributed_eigen_solve_result first = smallest_eigenpair_in_gauge(A, M, estimate, first_options);
+  if(first.residual <= options.residual_tolerance || !first.vector) return first;
+  const PetscScalar* values;
+  PetscInt size;
+  VecGetLocalSize(first.vector, &size);
+  VecGetArrayRead(first.vector, &values);
+  const Complex_vector better = Eigen::Map<const Complex_vector>(values, size);
+  VecRestoreArrayRead(first.vector, &values);
+  VecDestroy(&first.vector);
+  Distributed_eigen_solve_result result = smallest_eigenpair_in_gauge(A, M, better, options);
+  result.iterations += first.iterations;
+  return result;
+}
+
+// The whole of a distributed vector on rank 0 (empty on the others).
+inline Complex_vector gather_on_first_process(Vec x)
+{
+  VecScatter to_zero;
+  Vec all;
+  VecScatterCreateToZero(x, &to_zero, &all);
+  VecScatterBegin(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD);
+  VecScatterEnd(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD);
+  PetscInt size;
+  VecGetLocalSize(all, &size);
+  Complex_vector result(static_cast<Eigen::Index>(size));
+  const PetscScalar* values;
+  VecGetArrayRead(all, &values);
+  for(PetscInt i = 0; i < size; ++i) result[static_cast<Eigen::Index>(i)] = values[i];
+  VecRestoreArrayRead(all, &values);
+  VecScatterDestroy(&to_zero);
+  VecDestroy(&all);
+  return result;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
