@@ -409,6 +409,7 @@ template <typename SparseSolver>
 Distributed_eigen_solve_result distributed_smallest_eigenpair(Mat A, Mat M, const Distributed_eigen_solve_options& options)
 {
   const Complex_vector estimate = aligned_across_processes(A, M, local_eigenvector_estimate<SparseSolver>(A, M));
+  if(options.slepc_lobpcg) return smallest_eigenpair_in_gauge(A, M, estimate, options);  // (no restart)
   Distributed_eigen_solve_options first_options = options;
   first_options.residual_tolerance = (std::max)(options.residual_tolerance, options.regauge_tolerance);
   first_options.max_iterations = (std::min)(options.max_iterations, options.regauge_iterations);
