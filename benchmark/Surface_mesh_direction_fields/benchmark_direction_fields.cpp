@@ -52,6 +52,8 @@
 #include <string>
 #include <vector>
 
+#include "process_memory.h"
+
 #include <unistd.h>  // execv: the rerun with malloc's huge pages
 
 typedef CGAL::Simple_cartesian<double> Kernel;
@@ -62,23 +64,6 @@ typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std:
 #ifndef SMDF_SHARED_MESH_DIR
 #define SMDF_SHARED_MESH_DIR ""
 #endif
-
-// VmHWM or VmRSS of this process, in MB (0 if /proc is not there).
-static double proc_status_mb(const std::string& key)
-{
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, key.size(), key) == 0)
-      return std::stod(line.substr(key.size() + 1)) / 1024.;  // kB
-  return 0.;
-}
-
-static void reset_peak_memory()
-{
-  std::ofstream clear("/proc/self/clear_refs");
-  clear << "5";  // Linux >= 4.0: reset the peak RSS to the current RSS
-}
 
 // What is computed: the smoothest field, or the curvature-aligned one.
 struct Field_request

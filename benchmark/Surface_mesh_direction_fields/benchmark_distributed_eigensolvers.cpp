@@ -12,12 +12,10 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+
+#include "largest_component.h"
+#include "process_memory.h"
 
 #include <slepceps.h>
 
@@ -33,31 +31,6 @@ typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SI = CGAL::Surface_mesh_direction_fields::internal;
 
 namespace {
-
-// The process's high-water mark of resident memory, in MB.
-double peak_memory_mb()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while(std::getline(status, line))
-    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.;
-  return 0.;
-}
-
-// A and M of the largest component, for n = 4 and s = 0.
-SI::Energy_and_mass largest_component_matrices(const Mesh& mesh)
-{
-  const SI::Indexed_mesh m = SI::make_indexed_mesh(
-    mesh, [&](Mesh::Vertex_index v) { const auto& p = mesh.point(v); return SI::Vec3{p.x(), p.y(), p.z()}; },
-    get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh));
-  const SI::Tangent_spaces ts = SI::compute_tangent_spaces(m);
-  const SI::Connection con = SI::compute_connection(m, ts, 4);
-  const SI::Components comps = SI::split_into_components(m);
-  std::size_t largest = 0;
-  for(std::size_t c = 1; c < comps.list.size(); ++c)
-    if(comps.list[c].vertices.size() > comps.list[largest].vertices.size()) largest = c;
-  return SI::assemble_energy_and_mass(m, ts, con, comps.list[largest], comps.local_index, 0.);
-}
 
 // The rows of this process of a whole (replicated) Hermitian matrix.
 Mat distributed(const SI::Complex_sparse_matrix& S)
@@ -177,7 +150,7 @@ int main(int argc, char** argv)
     for(int i = 2; i < argc; ++i)
       if(argv[i][0] != '-') methods.push_back(argv[i]);
     if(methods.empty()) methods = {"krylov-schur", "lobpcg"};
-    const SI::Energy_and_mass em = largest_component_matrices(mesh);
+    const SI::Energy_and_mass em = Largest_component<Mesh>(mesh).matrices(0.);
     const double epsilon = 1e-8 * SI::eigenvalue_scale(em.energy, em.mass);
     for(const std::string& method : methods)
     {
@@ -237,7 +210,7 @@ int main(int argc, char** argv)
       MatDestroy(&A);
       MatDestroy(&M);
       std::vector<double> peaks(static_cast<std::size_t>(size));
-      const double peak = peak_memory_mb();
+      const double peak = proc_status_mb("VmHWM:");
       MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
       if(rank == 0)
       {

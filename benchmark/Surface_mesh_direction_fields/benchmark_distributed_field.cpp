@@ -18,9 +18,11 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
+
+#include "largest_component.h"
+#include "process_memory.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,7 +30,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,40 +42,16 @@ typedef std::chrono::steady_clock Clock;
 
 namespace {
 
-double peak_memory_mb()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while(std::getline(status, line))
-    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.;
-  return 0.;
-}
-
 double ms_since(Clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The mesh data of rank 0: the indexed mesh, its tangent spaces and
-// connection for n = 4, and the largest component.
-struct Mesh_data
+// The mesh data of rank 0: the largest component with its tangent spaces and
+// connection for n = 4.
+struct Mesh_data : Largest_component<Mesh>
 {
-  SI::Indexed_mesh m;
-  SI::Tangent_spaces ts;
-  SI::Connection con;
-  SI::Components comps;
-  std::size_t largest = 0;
-
-  explicit Mesh_data(const Mesh& mesh)
-    : m(SI::make_indexed_mesh(
-        mesh, [&](Mesh::Vertex_index v) { const auto& p = mesh.point(v); return SI::Vec3{p.x(), p.y(), p.z()}; },
-        get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh))),
-      ts(SI::compute_tangent_spaces(m)), con(SI::compute_connection(m, ts, 4)), comps(SI::split_into_components(m))
-  {
-    for(std::size_t c = 1; c < comps.list.size(); ++c)
-      if(comps.list[c].vertices.size() > comps.list[largest].vertices.size()) largest = c;
-  }
-  const SI::Component& component() const { return comps.list[largest]; }
+  explicit Mesh_data(const Mesh& mesh) : Largest_component<Mesh>(mesh) {}
 
   // The faces of nonzero index of the field given on the component's vertices.
   std::vector<std::size_t> singular_faces(const SI::Complex_vector& x) const
@@ -98,7 +75,7 @@ struct Single_result
 Single_result single_process(const Mesh_data& data)
 {
   const auto start = Clock::now();
-  const SI::Energy_and_mass em = SI::assemble_energy_and_mass(data.m, data.ts, data.con, data.component(), data.comps.local_index, 0.);
+  const SI::Energy_and_mass em = data.matrices(0.);
   Solver solver;
   SI::Factored_matrix<Solver> factored(solver);
   SI::Eigen_solve_result r = SI::smallest_eigenpair(em.energy, em.mass, factored, SI::Eigen_solve_options());
@@ -112,7 +89,7 @@ Single_result single_process(const Mesh_data& data)
 void print_peaks(int rank, int size)
 {
   std::vector<double> peaks(static_cast<std::size_t>(size));
-  const double peak = peak_memory_mb();
+  const double peak = proc_status_mb("VmHWM:");
   MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
   if(rank != 0) return;
   std::printf("  peak MB per rank:");

@@ -1,7 +1,13 @@
 """The checks of the Python tests: each one counted, a failure printed at
 once, a summary line and the exit status at the end (imported from the
 test's own folder)."""
+import os
 import sys
+
+# Open MPI refuses root without the first two; more ranks than cores need the
+# third (--oversubscribe); one BLAS thread per process.
+MPI_ENVIRONMENT = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+                       OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
 
 
 class Checks:

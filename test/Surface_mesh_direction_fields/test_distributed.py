@@ -14,14 +14,11 @@ import shutil
 import subprocess
 import sys
 
-from checks import Checks
+from checks import MPI_ENVIRONMENT as ENV, Checks
 
 BIN, MPIEXEC, SHARED, OUT = sys.argv[1:5]
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
-# Open MPI refuses root without these; more ranks than cores need --oversubscribe
-ENV = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_rmaps_base_oversubscribe="1")
 check = Checks()
 
 
