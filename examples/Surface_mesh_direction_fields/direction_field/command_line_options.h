@@ -39,6 +39,8 @@ struct Options
   double feature_angle = -1.;  // negative: no feature alignment
   std::string solver = "default";
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
+  bool distribute_from_given = false;
+  unsigned int distribute_from = 50000;  // --distribute-from: the smallest component spread over the processes
 };
 
 // The largest degree the program accepts. The library computes any degree up
@@ -91,9 +93,12 @@ inline const Option_help option_help[] = {
                                     "name: one 'N x1 y1 z1 ... xN yN zN' per line"},
   {"Outputs", "--mesh-out FILE", "the repaired triangle mesh the outputs refer to (.off, .obj or .ply)"},
   {"Outputs", "--quiet", "say nothing on stderr while running (progress is shown only on a terminal)"},
-  {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the factorization split over the "
-                                    "processes of mpirun (mpirun -np K direction_field MESH --solver petsc; a build "
-                                    "with PETSc)"},
+  {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the large components spread over "
+                                    "the processes of mpirun, which assemble and solve their parts without a "
+                                    "factorization (mpirun -np K direction_field MESH --solver petsc; a build with "
+                                    "PETSc and SLEPc); the first process reads the mesh and writes the outputs"},
+  {"Performance", "--distribute-from N", "with --solver petsc: the components of at least N vertices are spread over "
+                                         "the processes, smaller ones solved by the first (default 50000)"},
   {"Performance", "--petsc-options TEXT", "PETSc's own options for --solver petsc, as one argument "
                                          "(say \"-mat_mumps_icntl_14 50 -log_view\")"},
   {"Program", "--help, -h", "this text"},
@@ -109,7 +114,7 @@ inline const char* const usage =
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
   "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--solver default|petsc]\n"
-  "                       [--petsc-options TEXT]\n"
+  "                       [--petsc-options TEXT] [--distribute-from N]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -215,6 +220,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
   else if(a == "--solver") o.solver = v;
   else if(a == "--petsc-options") o.petsc_options = v;
+  else if(a == "--distribute-from") { o.distribute_from = parse_count(a, v); o.distribute_from_given = true; }
   else return false;
   return true;
 }
@@ -235,6 +241,7 @@ inline void check_options(const Options& o)
   if(o.solver != "default" && o.solver != "petsc")
     throw Usage_error("--solver expects default or petsc, got '" + o.solver + "'");
   if(!o.petsc_options.empty() && o.solver != "petsc") throw Usage_error("--petsc-options needs --solver petsc");
+  if(o.distribute_from_given && o.solver != "petsc") throw Usage_error("--distribute-from needs --solver petsc");
 #ifndef SMDF_WITH_PETSC
   if(o.solver == "petsc")
     throw Usage_error("--solver petsc: this build has no distributed solver (PETSc with complex scalars was not found)");

@@ -28,14 +28,20 @@
 #include "reports.h"
 
 #ifdef SMDF_WITH_PETSC
-#include <CGAL/Surface_mesh_direction_fields/Petsc_solver_traits.h>
+#include <CGAL/Surface_mesh_direction_fields/Petsc_distributed_solver.h>
+#endif
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <SuiteSparse_config.h>
 #endif
 
+#include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -88,8 +94,62 @@ std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>&
   return guidance;
 }
 
+// --solver petsc: MPI, PETSc and SLEPc for the whole run. The first process
+// runs the program; the others serve its requests (assembly and solves of the
+// large components) until it has computed the field, then return.
+class Processes
+{
+public:
+  explicit Processes(const Options& o)
+  {
+#ifdef SMDF_WITH_PETSC
+    if(o.solver != "petsc") return;
+    if(SlepcInitializeNoArguments() != 0) throw Usage_error("--solver petsc: PETSc (MPI) could not start");
+    m_petsc = true;
+    if(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()) != 0)
+      throw Usage_error("--petsc-options: PETSc does not accept '" + o.petsc_options + "'");
+    m_solver.reset(new SMDF::Petsc_distributed_solver(PETSC_COMM_WORLD, o.distribute_from));
+    m_rank = m_solver->is_first_process() ? 0 : 1;
+    m_size = m_solver->number_of_processes();
+#else
+    (void)o;
+#endif
+  }
+  ~Processes()
+  {
+#ifdef SMDF_WITH_PETSC
+    if(m_solver && m_rank == 0) m_solver->finish();  // the others return from serve()
+    m_solver.reset();
+    if(m_petsc) SlepcFinalize();
+#endif
+  }
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+  bool writes() const { return m_rank == 0; }
+  int size() const { return m_size; }
+  // Every process but the first: its share of the first one's requests.
+  void serve() const
+  {
+#ifdef SMDF_WITH_PETSC
+    if(m_solver && m_rank != 0) m_solver->serve();
+#endif
+  }
+#ifdef SMDF_WITH_PETSC
+  const SMDF::Petsc_distributed_solver& distributed_solver() const { return *m_solver; }
+#endif
+
+private:
+  bool m_petsc = false;
+  int m_rank = 0, m_size = 1;
+#ifdef SMDF_WITH_PETSC
+  std::unique_ptr<SMDF::Petsc_distributed_solver> m_solver;
+#endif
+};
+
 // The library call, with the named parameters the options ask for.
-void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_field& field)
+void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Processes& processes,
+                   Computed_field& field)
 {
   const SMDF::Principal_curvature_alignment curvature =
     o.align == "none" ? SMDF::Principal_curvature_alignment::NONE
@@ -125,8 +185,9 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, Computed_
   };
   auto with_solver = [&](auto np) {
 #ifdef SMDF_WITH_PETSC
-    if(o.solver == "petsc") return with_features(np.sparse_linear_solver(SMDF::Petsc_solver_traits()));
+    if(o.solver == "petsc") return with_features(np.distributed_solver(processes.distributed_solver()));
 #endif
+    (void)processes;
     return with_features(np);
   };
   auto with_guidance = [&](auto np) {
@@ -227,42 +288,6 @@ void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
 
-// --solver petsc: MPI and PETSc for the whole run (every process computes;
-// the first one writes), nothing otherwise.
-class Processes
-{
-public:
-  explicit Processes(const Options& o)
-  {
-#ifdef SMDF_WITH_PETSC
-    if(o.solver != "petsc") return;
-    if(PetscInitializeNoArguments() != 0) throw Usage_error("--solver petsc: PETSc (MPI) could not start");
-    m_petsc = true;
-    if(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()) != 0)
-      throw Usage_error("--petsc-options: PETSc does not accept '" + o.petsc_options + "'");
-    MPI_Comm_rank(PETSC_COMM_WORLD, &m_rank);
-    MPI_Comm_size(PETSC_COMM_WORLD, &m_size);
-#else
-    (void)o;
-#endif
-  }
-  ~Processes()
-  {
-#ifdef SMDF_WITH_PETSC
-    if(m_petsc) PetscFinalize();
-#endif
-  }
-  Processes(const Processes&) = delete;
-  Processes& operator=(const Processes&) = delete;
-
-  bool writes() const { return m_rank == 0; }
-  int size() const { return m_size; }
-
-private:
-  bool m_petsc = false;
-  int m_rank = 0, m_size = 1;
-};
-
 void report_out_of_memory(Progress& progress)
 {
   const std::string step = progress.step();
@@ -272,16 +297,37 @@ void report_out_of_memory(Progress& progress)
 
 } // namespace
 
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+// CHOLMOD prints its messages with printf; standard output holds the report
+// (the JSON of --json) alone.
+int print_to_stderr(const char* format, ...)
+{
+  va_list arguments;
+  va_start(arguments, format);
+  const int written = std::vfprintf(stderr, format, arguments);
+  va_end(arguments);
+  return written;
+}
+#endif
+
 int main(int argc, char** argv)
 {
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+  SuiteSparse_config.printf_func = print_to_stderr;
+#endif
   Progress progress(true);
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
     const Processes processes(o);
+    if(!processes.writes())
+    {
+      processes.serve();
+      return EXIT_SUCCESS;
+    }
     Output_files outputs;
-    if(processes.writes()) register_outputs(o, outputs);
-    progress = Progress(o.quiet || !processes.writes());
+    register_outputs(o, outputs);
+    progress = Progress(o.quiet);
     Program_timings timings;
     progress.begin("reading " + o.mesh, timings.read);
     Polygon_soup soup = read_polygon_soup(o.mesh);
@@ -293,9 +339,8 @@ int main(int argc, char** argv)
     Computed_field field(input.mesh);
     double compute_ms = 0.;
     progress.begin("computing the field", compute_ms);
-    compute_field(o, input, field);
+    compute_field(o, input, processes, field);
     progress.end();
-    if(!processes.writes()) return EXIT_SUCCESS;  // the first process writes everything
     report_computation(progress, field.result);
     progress.begin("writing", timings.write);
     write_file_order_outputs(o, input, field, outputs);

@@ -29,6 +29,7 @@
 // the method: tangent spaces -> connection -> local matrices -> A, M -> directions, indices
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
@@ -246,6 +247,11 @@ public:
     SparseSolver linear_solver = choose_parameter<SparseSolver>(get_parameter(np, internal_np::sparse_linear_solver));
     m_user_solver = user_solver ? std::make_unique<Component_factorization>() : nullptr;
     if(user_solver) m_user_solver->solver = linear_solver;
+    // A backend over several processes (Petsc_distributed_solver) for this call.
+    auto&& backend = parameters::get_parameter_reference(np, internal_np::distributed_solver);
+    m_distributed = nullptr;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::distributed_solver_t>::value)
+      m_distributed = &backend;
 
     // 1. the connection of degree n and the matrices of (n, s), unless kept from the last call
     update_matrices(result.degree, result.smoothness_parameter);
@@ -279,6 +285,7 @@ public:
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     if(!m_keep_factorizations) m_factorizations.clear();
     m_user_solver.reset();
+    m_distributed = nullptr;
     return result;
   }
 
@@ -387,9 +394,10 @@ private:
     const internal::Component& comp = m_components.list[c];
     Component_report& report = result.components[c];
     internal::describe_component(m_mesh, comp, report);
-    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
     bool aligned = false;
-    const internal::Complex_vector q = component_guidance(comp, requests.guidance, M, aligned);
+    const internal::Complex_vector q =
+      requests.guidance.empty() ? internal::Complex_vector::Zero(static_cast<Eigen::Index>(comp.vertices.size()))
+                                : component_guidance(comp, requests.guidance, component_matrices(c).mass, aligned);
     const internal::Constraints constraints = component_constraints(comp, requests.constraints);
     const bool constrained = !constraints.empty();
 
@@ -398,7 +406,7 @@ private:
     // the solver cannot tell whether A - lambda_t M is positive definite
     const bool smoothest = !aligned && !constrained;
     const bool needs_eigenvalue = smoothest || requests.alignment.eigenvalue_bound ||
-                                  (aligned && (requests.alignment.weight_given || !detects_indefinite));
+                                  (aligned && (requests.alignment.weight_given || !certifies_definiteness(c)));
     report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
     internal::Complex_vector u;
     if(needs_eigenvalue)
@@ -420,12 +428,14 @@ private:
   internal::Complex_vector smallest_eigenvector(std::size_t c, internal::Eigen_solve_options options, bool user_solver,
                                                 Component_report& report, Direction_field_timings& timings)
   {
+    if(distributes(c))
+      return distributed_smallest_eigenvector(c, options, report);
     Component_factorization& kept = component_factorization(c, user_solver);
     options.same_pattern = kept.analyzed && !user_solver;
     kept.analyzed = true;
     kept.aligned_lambda = std::numeric_limits<double>::quiet_NaN();
     internal::Eigen_solve_result eig =
-      internal::smallest_eigenpair(m_matrices[c].energy, m_matrices[c].mass, kept.factored, options);
+      internal::smallest_eigenpair(component_matrices(c).energy, component_matrices(c).mass, kept.factored, options);
     release_factorization(c, user_solver);
     report.eigenvalue = eig.eigenvalue;
     report.iterations = eig.iterations;
@@ -445,8 +455,8 @@ private:
                                          SparseSolver& linear_solver, Component_report& report,
                                          Direction_field_timings& timings)
   {
-    const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
-    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    const internal::Complex_sparse_matrix& A = component_matrices(c).energy;
+    const internal::Complex_sparse_matrix& M = component_matrices(c).mass;
     const internal::Complex_vector Mq = M * q;
     const double scale = internal::eigenvalue_scale(A, M);
     internal::Complex_vector u;
@@ -466,7 +476,7 @@ private:
       // a lambda_t given (or 0 for a field with constraints only): admissible
       // when the matrix of the free vertices is positive definite (a solver
       // that cannot tell is checked against lambda_1 instead)
-      const bool below_bound = detects_indefinite || !aligned || lambda < report.eigenvalue;
+      const bool below_bound = certifies_definiteness(c) || !aligned || lambda < report.eigenvalue;
       if(!below_bound ||
          !solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
       {
@@ -495,8 +505,8 @@ private:
                                                      SparseSolver& linear_solver, Component_report& report,
                                                      Direction_field_timings& timings, double& lambda)
   {
-    const internal::Complex_sparse_matrix& A = m_matrices[c].energy;
-    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    const internal::Complex_sparse_matrix& A = component_matrices(c).energy;
+    const internal::Complex_sparse_matrix& M = component_matrices(c).mass;
     const double scale = internal::eigenvalue_scale(A, M);
     internal::Complex_vector u;
     if(std::isnan(report.eigenvalue))
@@ -524,7 +534,10 @@ private:
                                        SparseSolver& linear_solver, Direction_field_timings& timings,
                                        internal::Complex_vector& u)
   {
-    const internal::Shifted_system system(m_matrices[c].energy, m_matrices[c].mass, lambda, constraints);
+    if(distributes(c))
+      return distributed_shifted_solve(c, lambda, Mq, constraints, u);
+    const internal::Shifted_system system(component_matrices(c).energy, component_matrices(c).mass, lambda,
+                                          constraints);
     const auto start = Clock::now();
     if(!constraints.empty())
     {
@@ -610,13 +623,66 @@ private:
     if(!(m_has_matrices && s == m_s))
     {
       m_matrices.clear();  // free the old matrices before building the new ones
-      m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
+      if(m_distributed)  // the first process assembles only what it solves or what the aligned field reads
+        m_matrices.resize(m_components.list.size());
+      else
+        m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
       for(auto& kept : m_factorizations)  // they factor the old matrices
         if(kept) kept->aligned_lambda = std::numeric_limits<double>::quiet_NaN();
       m_has_matrices = true;
       m_degree = degree;
       m_s = s;
     }
+  }
+
+  // A and M of component c, assembled when first needed (see update_matrices()).
+  const internal::Energy_and_mass& component_matrices(std::size_t c)
+  {
+    internal::Energy_and_mass& em = m_matrices[c];
+    if(em.energy.rows() == 0)
+      em = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components.list[c],
+                                              m_components.local_index, m_s);
+    return em;
+  }
+
+  // Whether component c is spread over the processes of a distributed backend.
+  bool distributes(std::size_t c) const
+  {
+    return m_distributed != nullptr && m_distributed->distributes(m_components.list[c].vertices.size());
+  }
+
+  // Whether the solver of component c tells when A - lambda M is not
+  // positive definite (the distributed solves do not factor).
+  bool certifies_definiteness(std::size_t c) const { return detects_indefinite && !distributes(c); }
+
+  internal::Assembly_source assembly_source(std::size_t c) const
+  {
+    return {&m_mesh, &m_tangent_spaces, &m_connection, &m_components.list[c], &m_components.local_index};
+  }
+
+  // smallest_eigenvector() over the processes of the distributed backend.
+  internal::Complex_vector distributed_smallest_eigenvector(std::size_t c, const internal::Eigen_solve_options& options,
+                                                            Component_report& report)
+  {
+    internal::Eigen_solve_result eig = m_distributed->smallest_eigenpair(assembly_source(c), m_s, options);
+    if(eig.vector.size() != static_cast<Eigen::Index>(m_components.list[c].vertices.size()))
+      throw Solver_failure_error("the distributed eigen-solve failed on component " + std::to_string(c));
+    report.eigenvalue = eig.eigenvalue;
+    report.iterations = eig.iterations;
+    report.residual = eig.residual;
+    report.converged = eig.converged;
+    return std::move(eig.vector);
+  }
+
+  // solve_below_smallest_eigenvalue() over the processes of the distributed
+  // backend: false if conjugate gradients did not converge.
+  bool distributed_shifted_solve(std::size_t c, double lambda, const internal::Complex_vector& Mq,
+                                 const internal::Constraints& constraints, internal::Complex_vector& u)
+  {
+    internal::Eigen_solve_options options;
+    const internal::Distributed_solve_report r =
+      m_distributed->shifted_solve(assembly_source(c), m_s, lambda, Mq, constraints, options, u);
+    return r.converged && u.size() == Mq.size();
   }
 
   // The factorization of component c: the user's solver (this call only), or
@@ -657,6 +723,7 @@ private:
   bool m_keep_factorizations = true;
   std::vector<std::unique_ptr<Component_factorization> > m_factorizations;
   std::unique_ptr<Component_factorization> m_user_solver;
+  const internal::Distributed_backend* m_distributed = nullptr;  // during a call with `distributed_solver`
 };
 
 } // namespace Surface_mesh_direction_fields

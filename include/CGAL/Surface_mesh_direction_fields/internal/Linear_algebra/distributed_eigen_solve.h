@@ -97,15 +97,25 @@ inline Complex_sparse_matrix local_diagonal_block(Mat S)
   return result;
 }
 
+// Blocks of at most this many rows are solved as dense matrices.
+constexpr Eigen::Index dense_block_size = 200;
+
 // A rough estimate of the smallest eigenvector of this process's block:
 // the coarse estimate (aggregation levels, smoothed), or, when the block is
 // too small for aggregation to pay, its smallest eigenvector to a loose
-// tolerance.
+// tolerance (exactly for a tiny block).
 template <typename SparseSolver>
 Complex_vector local_eigenvector_estimate(Mat A, Mat M)
 {
   const Complex_sparse_matrix A_local = local_diagonal_block(A), M_local = local_diagonal_block(M);
   if(A_local.rows() == 0) return Complex_vector();
+  if(A_local.rows() <= dense_block_size)  // a few faces: exactly, and without a factorization that may fail
+  {
+    const Eigen::MatrixXcd A_dense(A_local), M_dense(M_local);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> dense(A_dense, M_dense);
+    if(dense.info() == Eigen::Success) return dense.eigenvectors().col(0);
+    return Complex_vector::Ones(A_local.rows());
+  }
   Eigen_solve_options options;
   options.residual_tolerance = options.coarse_tolerance;
   Coarse_estimate coarse =
@@ -177,6 +187,15 @@ inline Complex_vector aligned_across_processes(Mat A, Mat M, const Complex_vecto
   return local * ritz.eigenvectors().col(0)[rank];
 }
 
+// The vector GAMG builds its coarse spaces from.
+inline void set_near_null_vector(Mat S, Vec near_null)
+{
+  MatNullSpace space;
+  MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(S)), PETSC_FALSE, 1, &near_null, &space);
+  MatSetNearNullSpace(S, space);
+  MatNullSpaceDestroy(&space);
+}
+
 // A + epsilon M, with the near-null vector `near_null` for GAMG.
 inline Mat shifted_preconditioner_matrix(Mat A, Mat M, double epsilon, Vec near_null)
 {
@@ -184,10 +203,7 @@ inline Mat shifted_preconditioner_matrix(Mat A, Mat M, double epsilon, Vec near_
   MatDuplicate(A, MAT_COPY_VALUES, &P);
   MatAXPY(P, epsilon, M, SAME_NONZERO_PATTERN);
   MatSetOption(P, MAT_HERMITIAN, PETSC_TRUE);
-  MatNullSpace space;
-  MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), PETSC_FALSE, 1, &near_null, &space);
-  MatSetNearNullSpace(P, space);
-  MatNullSpaceDestroy(&space);
+  set_near_null_vector(P, near_null);
   return P;
 }
 
@@ -363,6 +379,46 @@ private:
   Vec m_S[3], m_AS[3], m_MS[3], m_r;
 };
 
+// The change of gauge of an estimate b (see the note at the top): the unit
+// phases d = b / |b|, their conjugates, and |b| normalized, the real
+// near-null vector of the matrices in that gauge; each process holds its
+// rows.
+class Gauge
+{
+public:
+  Gauge(Mat S, const Complex_vector& estimate)
+  {
+    d = vector_like(S, estimate.unaryExpr([](const Complex& z) { return unit(z); }));
+    modulus = vector_like(S, estimate.cwiseAbs().cast<Complex>());
+    VecNormalize(modulus, nullptr);
+    VecDuplicate(d, &d_conjugate);
+    VecCopy(d, d_conjugate);
+    VecConjugate(d_conjugate);
+  }
+  ~Gauge()
+  {
+    for(Vec* v : {&d, &d_conjugate, &modulus}) VecDestroy(v);
+  }
+  Gauge(const Gauge&) = delete;
+  Gauge& operator=(const Gauge&) = delete;
+
+  void enter(Mat S) const { MatDiagonalScale(S, d_conjugate, d); }  // S <- D^* S D
+  void leave(Mat S) const { MatDiagonalScale(S, d, d_conjugate); }  // S <- D S D^*
+  void enter(Vec v) const { VecPointwiseMult(v, v, d_conjugate); }  // v <- D^* v
+  void leave(Vec v) const { VecPointwiseMult(v, v, d); }            // v <- D v
+
+  Vec d = nullptr, d_conjugate = nullptr, modulus = nullptr;
+};
+
+// The trace ratio s_A = trace(A) / trace(M), the scale of eigen_solve.h.
+inline double distributed_eigenvalue_scale(Mat A, Mat M)
+{
+  PetscScalar trace_a, trace_m;
+  MatGetTrace(A, &trace_a);
+  MatGetTrace(M, &trace_m);
+  return PetscRealPart(trace_a) / PetscRealPart(trace_m);
+}
+
 // The smallest eigenpair of (A, M), both Hermitian with the same pattern and
 // row distribution, in the gauge of `estimate` (this process's entries of a
 // rough eigenvector; see the note at the top). A and M are rotated into that
@@ -370,36 +426,25 @@ private:
 inline Distributed_eigen_solve_result smallest_eigenpair_in_gauge(Mat A, Mat M, const Complex_vector& estimate,
                                                                   const Distributed_eigen_solve_options& options)
 {
-  const Complex_vector phase = estimate.unaryExpr([](const Complex& z) { return unit(z); });
-  Vec d = vector_like(A, phase), d_conjugate, modulus = vector_like(A, estimate.cwiseAbs().cast<Complex>());
-  VecNormalize(modulus, nullptr);
-  VecDuplicate(d, &d_conjugate);
-  VecCopy(d, d_conjugate);
-  VecConjugate(d_conjugate);
-  MatDiagonalScale(A, d_conjugate, d);
-  MatDiagonalScale(M, d_conjugate, d);
-  PetscScalar trace_a, trace_m;
-  MatGetTrace(A, &trace_a);
-  MatGetTrace(M, &trace_m);
-  const double scale = PetscRealPart(trace_a) / PetscRealPart(trace_m);
-  Mat P = shifted_preconditioner_matrix(A, M, options.relative_shift * scale, modulus);
+  const Gauge gauge(A, estimate);
+  gauge.enter(A);
+  gauge.enter(M);
+  const double scale = distributed_eigenvalue_scale(A, M);
+  Mat P = shifted_preconditioner_matrix(A, M, options.relative_shift * scale, gauge.modulus);
   Distributed_eigen_solve_result result;
   if(options.slepc_lobpcg)
-    result = lobpcg_with_multigrid(A, M, P, modulus, options);
+    result = lobpcg_with_multigrid(A, M, P, gauge.modulus, options);
   else
   {
     KSP preconditioner = multigrid_preconditioner(P);
     Single_vector_lobpcg lobpcg(A, M, preconditioner);
-    result = lobpcg.run(modulus, scale, options);
+    result = lobpcg.run(gauge.modulus, scale, options);
     KSPDestroy(&preconditioner);
   }
-  if(result.vector) VecPointwiseMult(result.vector, result.vector, d);  // back to the original gauge
-  MatDiagonalScale(A, d, d_conjugate);
-  MatDiagonalScale(M, d, d_conjugate);
+  if(result.vector) gauge.leave(result.vector);
+  gauge.leave(A);
+  gauge.leave(M);
   MatDestroy(&P);
-  VecDestroy(&modulus);
-  VecDestroy(&d_conjugate);
-  VecDestroy(&d);
   return result;
 }
 

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/local_matrices.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
@@ -65,16 +66,6 @@ inline int owner_of_row(const std::vector<std::int64_t>& first, std::int64_t row
 {
   return static_cast<int>(std::upper_bound(first.begin(), first.end(), row) - first.begin()) - 1;
 }
-
-// The mesh data of rank 0 (nothing on the others).
-struct Assembly_source
-{
-  const Indexed_mesh* mesh = nullptr;
-  const Tangent_spaces* tangent_spaces = nullptr;
-  const Connection* connection = nullptr;
-  const Component* component = nullptr;
-  const std::vector<Compact_index>* local_index = nullptr;  // the row of each vertex in its component
-};
 
 // For each row, the distinct columns of its entries in its own process's
 // range (the diagonal included) and in other ranges: PETSc's exact
