@@ -7,13 +7,17 @@
 // gathered on rank 0. Prints the time of each step, the peak resident memory
 // of every process, the edge cut and the singular faces.
 //
-//   mpirun -np K build/bin/benchmark_distributed_field MESH [--single] [--compare] [--slepc-lobpcg] [PETSc options]
+//   mpirun -np K build/bin/benchmark_distributed_field MESH [--single] [--compare] [--slepc-lobpcg]
+//                                                      [--partition-cut] [PETSc options]
 //
 // --single runs the package's single-process eigen-solve instead (the
 // reference for time and memory, one process); --compare runs it as well,
 // after the distributed one, on rank 0, and prints the relative difference
 // of the eigenvalues and the singular faces found by only one of them.
 // --slepc-lobpcg uses SLEPc's LOBPCG instead of the package's.
+// --partition-cut also prints the edge cut of PT-Scotch's partition of the
+// component's vertex graph into K parts (PETSc's MatPartitioning), against
+// that of the breadth-first ranges the package uses.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -86,6 +90,55 @@ Single_result single_process(const Mesh_data& data)
   return result;
 }
 
+// The edges between parts of PT-Scotch's partition of the component's
+// vertex graph into `parts` parts, on this process alone.
+std::size_t ptscotch_cut(const Mesh_data& data, int parts)
+{
+  const SI::Component& comp = data.component();
+  const PetscInt n = static_cast<PetscInt>(comp.vertices.size());
+  std::vector<std::vector<PetscInt> > neighbours(comp.vertices.size());
+  PetscInt entries = 0;
+  for(std::size_t row = 0; row < comp.vertices.size(); ++row)
+  {
+    for(std::size_t corner : data.m.fan(comp.vertices[row]))
+      for(std::size_t other : {SI::Indexed_mesh::next_corner(corner), SI::Indexed_mesh::previous_corner(corner)})
+        neighbours[row].push_back(static_cast<PetscInt>(data.comps.local_index[data.m.vertex_of_corner(other)]));
+    std::sort(neighbours[row].begin(), neighbours[row].end());
+    neighbours[row].erase(std::unique(neighbours[row].begin(), neighbours[row].end()), neighbours[row].end());
+    entries += static_cast<PetscInt>(neighbours[row].size());
+  }
+  PetscInt *offsets, *columns;  // PETSc's own arrays: the adjacency matrix frees them
+  PetscMalloc1(n + 1, &offsets);
+  PetscMalloc1(entries, &columns);
+  offsets[0] = 0;
+  for(PetscInt row = 0; row < n; ++row)
+  {
+    const std::vector<PetscInt>& list = neighbours[static_cast<std::size_t>(row)];
+    std::copy(list.begin(), list.end(), columns + offsets[row]);
+    offsets[row + 1] = offsets[row] + static_cast<PetscInt>(list.size());
+  }
+  Mat adjacency;
+  MatCreateMPIAdj(PETSC_COMM_SELF, n, n, offsets, columns, nullptr, &adjacency);
+  MatPartitioning partitioning;
+  MatPartitioningCreate(PETSC_COMM_SELF, &partitioning);
+  MatPartitioningSetAdjacency(partitioning, adjacency);
+  MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH);
+  MatPartitioningSetNParts(partitioning, parts);
+  IS part_of_row;
+  MatPartitioningApply(partitioning, &part_of_row);
+  const PetscInt* part;
+  ISGetIndices(part_of_row, &part);
+  std::size_t cut = 0;
+  for(PetscInt row = 0; row < n; ++row)
+    for(PetscInt column : neighbours[static_cast<std::size_t>(row)])
+      cut += (column > row && part[column] != part[row]) ? 1 : 0;
+  ISRestoreIndices(part_of_row, &part);
+  ISDestroy(&part_of_row);
+  MatPartitioningDestroy(&partitioning);
+  MatDestroy(&adjacency);
+  return cut;
+}
+
 void print_peaks(int rank, int size)
 {
   std::vector<double> peaks(static_cast<std::size_t>(size));
@@ -105,12 +158,13 @@ int main(int argc, char** argv)
   int rank = 0, size = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  bool single = false, compare = false;
+  bool single = false, compare = false, partition_cut = false;
   SI::Distributed_eigen_solve_options options;
   for(int i = 2; i < argc; ++i)
   {
     single = single || std::strcmp(argv[i], "--single") == 0;
     compare = compare || std::strcmp(argv[i], "--compare") == 0;
+    partition_cut = partition_cut || std::strcmp(argv[i], "--partition-cut") == 0;
     options.slepc_lobpcg = options.slepc_lobpcg || std::strcmp(argv[i], "--slepc-lobpcg") == 0;
   }
   {
@@ -162,6 +216,9 @@ int main(int argc, char** argv)
                     assembly_ms + solve_ms + gather_ms, matrices.cut_edges,
                     r.converged ? data->singular_faces(x).size() : std::size_t(0));
       print_peaks(rank, size);
+      if(partition_cut && rank == 0)
+        std::printf("  edge cut into %d parts: breadth-first ranges %zu, PT-Scotch %zu\n", size, matrices.cut_edges,
+                    ptscotch_cut(*data, size));
       if(compare && rank == 0 && r.converged)
       {
         const Single_result s = single_process(*data);

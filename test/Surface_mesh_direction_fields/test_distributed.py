@@ -101,4 +101,10 @@ d, sing = run(two_parts, [], 2, "default_threshold", distribute_from=None)
 check(d is not None and sing == single_sing and d["eigenvalues"] == single["eigenvalues"],
       "default --distribute-from: the first process's solve, the same eigenvalues and singular faces")
 
+# an input the first process refuses: one error line and status 1, the other processes released (no hang)
+r = subprocess.run([MPIEXEC, "-np", "2", BIN, os.path.join(OUT, "missing.off"), "--solver", "petsc"],
+                   capture_output=True, text=True, env=ENV, timeout=120)
+check(r.returncode != 0 and r.stderr.count("direction_field: error: cannot open") == 1,
+      "a missing mesh under mpirun: status %d, %r" % (r.returncode, r.stderr[:200]))
+
 check.finish()

@@ -255,6 +255,16 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                    able to factor Hermitian positive definite matrices (both triangles are given)}
     \cgalParamDefault{`CGAL::Surface_mesh_direction_fields::Default_direction_field_solver`}
   \cgalParamNEnd
+  \cgalParamNBegin{distributed_solver}
+    \cgalParamDescription{spreads the components of at least its `minimum_distributed_vertices()` vertices over
+                          the processes of its MPI communicator (user manual, section "Several Processes"); the
+                          call is made on the first process, while the others run its `serve()`. Such a component's
+                          eigen-solve and aligned or constrained solve factor nothing: a given
+                          `alignment_lambda` is then checked against \f$ \lambda_1 \f$, which is computed}
+    \cgalParamType{`CGAL::Surface_mesh_direction_fields::Petsc_distributed_solver` (or another model of its
+                   internal interface)}
+    \cgalParamDefault{none: every component is solved by `sparse_linear_solver` in this process}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns a `Direction_field_result`: per component, the smallest eigenvalue, the iterations used,
