@@ -107,4 +107,10 @@ r = subprocess.run([MPIEXEC, "-np", "2", BIN, os.path.join(OUT, "missing.off"), 
 check(r.returncode != 0 and r.stderr.count("direction_field: error: cannot open") == 1,
       "a missing mesh under mpirun: status %d, %r" % (r.returncode, r.stderr[:200]))
 
+# a bad option, which every process refuses before MPI starts: said once
+r = subprocess.run([MPIEXEC, "-np", "2", BIN, two_parts, "--solver", "petsc", "--distribute-from", "-5"],
+                   capture_output=True, text=True, env=ENV, timeout=120)
+check(r.returncode != 0 and r.stderr.count("direction_field: error:") == 1,
+      "a bad option under mpirun: status %d, %d error lines" % (r.returncode, r.stderr.count("direction_field: error:")))
+
 check.finish()

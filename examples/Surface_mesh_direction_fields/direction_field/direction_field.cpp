@@ -288,6 +288,16 @@ void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
 
+// Under mpirun every process parses the options before MPI starts, so a bad
+// option fails on all of them: only the first says it (its rank comes from
+// the launcher's environment: Open MPI's, or MPICH's and Slurm's).
+bool is_first_launched_process()
+{
+  for(const char* variable : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "SLURM_PROCID"})
+    if(const char* rank = std::getenv(variable)) return std::string(rank) == "0";
+  return true;
+}
+
 void report_out_of_memory(Progress& progress)
 {
   const std::string step = progress.step();
@@ -370,7 +380,7 @@ int main(int argc, char** argv)
   catch(const std::exception& e)  // bad input, bad options, unwritable outputs: one line
   {
     progress.interrupt();
-    std::cerr << "direction_field: error: " << e.what() << std::endl;
+    if(is_first_launched_process()) std::cerr << "direction_field: error: " << e.what() << std::endl;
   }
   return EXIT_FAILURE;
 }
