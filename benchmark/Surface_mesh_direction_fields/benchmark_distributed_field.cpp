@@ -33,6 +33,7 @@
 #include <iterator>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -166,6 +167,8 @@ int main(int argc, char** argv)
     compare = compare || std::strcmp(argv[i], "--compare") == 0;
     partition_cut = partition_cut || std::strcmp(argv[i], "--partition-cut") == 0;
     options.slepc_lobpcg = options.slepc_lobpcg || std::strcmp(argv[i], "--slepc-lobpcg") == 0;
+    if(i + 1 < argc && std::strcmp(argv[i], "--regauge-tolerance") == 0) options.regauge_tolerance = std::atof(argv[i + 1]);
+    if(i + 1 < argc && std::strcmp(argv[i], "--regauge-iterations") == 0) options.regauge_iterations = std::atoi(argv[i + 1]);
   }
   {
     std::unique_ptr<Mesh_data> data;
@@ -184,7 +187,8 @@ int main(int argc, char** argv)
                     argv[1], size, data->component().vertices.size(), data->component().faces.size(), read_ms, ms_since(setup));
       }
       else
-        std::fprintf(stderr, "usage: benchmark_distributed_field MESH [--single] [--compare]\n");
+        std::fprintf(stderr, "usage: benchmark_distributed_field MESH [--single] [--compare] [--partition-cut] [--slepc-lobpcg]\n"
+                           "       [--regauge-tolerance R] [--regauge-iterations K] [PETSc options]\n");
     }
     MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD);
     if(ok && single && rank == 0)

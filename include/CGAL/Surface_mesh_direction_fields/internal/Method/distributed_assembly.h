@@ -189,20 +189,27 @@ inline void send_faces(MPI_Comm comm, const Assembly_source& source, const std::
   }
 }
 
-// Any other rank: the pieces from rank 0, until an empty one.
+// Any other rank: the pieces from rank 0, until an empty one, all received
+// before any is computed. Rank 0's sends of large pieces complete only when
+// this process is inside MPI, so computing each piece as it arrives would
+// make rank 0 wait for that computation before it could go on with its own.
 inline void receive_faces(MPI_Comm comm, double mollification, double s, Mat A, Mat M)
 {
-  std::vector<Face_record> records;
+  std::vector<std::vector<Face_record> > pieces;
   for(;;)
   {
     MPI_Status status;
     MPI_Probe(0, 0, comm, &status);
     int bytes = 0;
     MPI_Get_count(&status, MPI_BYTE, &bytes);
-    records.resize(static_cast<std::size_t>(bytes) / sizeof(Face_record));
-    MPI_Recv(records.data(), bytes, MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE);
-    if(records.empty()) return;
-    add_local_matrices(records, mollification, s, A, M);
+    pieces.emplace_back(static_cast<std::size_t>(bytes) / sizeof(Face_record));
+    MPI_Recv(pieces.back().data(), bytes, MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE);
+    if(pieces.back().empty()) break;
+  }
+  for(std::vector<Face_record>& piece : pieces)
+  {
+    add_local_matrices(piece, mollification, s, A, M);
+    std::vector<Face_record>().swap(piece);
   }
 }
 
