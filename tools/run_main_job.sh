@@ -11,9 +11,6 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build/main_job.log 2>&1 || { ca
 cmake --build build --target direction_field -j "$(nproc)" >> build/main_job.log 2>&1 || { cat build/main_job.log; exit 1; }
 mkdir -p build/main_job
 out=build/main_job
-# malloc's transparent huge pages (glibc >= 2.35; see the README, "Performance"):
-# much faster on virtual machines where page faults are expensive
-export GLIBC_TUNABLES="${GLIBC_TUNABLES:-glibc.malloc.hugetlb=1}"
 build/bin/direction_field "$@" --directions $out/directions.txt --singularities $out/singularities.txt \
                                 --png $out/field.png --vtk $out/field.vtk --json-file $out/summary.json \
                                 --streamlines $out/streamlines.vtp

@@ -5,7 +5,7 @@
 // Globally_optimal_direction_field (another s: no mesh work, no symbolic
 // analysis).
 //
-//   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R] [--no-huge-pages]
+//   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R] [--huge-pages | --no-huge-pages]
 //                                     [--backend default|ldlt|both] [--subdivide K] [--csv FILE]
 //                                     [--align curvature [--lambda L]] [MESH...]
 // A mesh given as FILE@K is FILE after K steps of Loop subdivision (4^K times the faces).
@@ -28,11 +28,13 @@
 // needed one linear solve would do it; "x" is total / ref (the target
 // for the smoothest cross field at 400,000 faces is x <= 1.5).
 //
-// Huge pages: unless GLIBC_TUNABLES is already set or --no-huge-pages is
-// given, the program runs itself again with GLIBC_TUNABLES=glibc.malloc.hugetlb=1
+// Huge pages: with --huge-pages (and GLIBC_TUNABLES not already set), the
+// program runs itself again with GLIBC_TUNABLES=glibc.malloc.hugetlb=1
 // (glibc >= 2.35; ignored by older ones), so that malloc asks the kernel for
-// transparent huge pages. On the virtual machines this was measured on, the
-// first touch of fresh 4 KB pages is expensive (see README.md beside this file).
+// transparent huge pages. Whether that helps depends on the machine: see
+// README.md beside this file (on the machines measured last it made a cold
+// run slower, hence the default). --no-huge-pages, the default, is accepted
+// for the scripts written when huge pages were the default.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -50,6 +52,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "process_memory.h"
@@ -74,17 +77,28 @@ struct Field_request
   double lambda = 0.;
 };
 
+template <typename DirectionMap, typename NamedParameters>
+SMDF::Direction_field_result compute_with(const Mesh& mesh, DirectionMap dir, const Field_request& f,
+                                          SMDF::Principal_curvature_alignment which, const NamedParameters& np)
+{
+  if(!f.aligned) return SMDF::compute_globally_optimal_directions(mesh, dir, np);
+  if(!f.lambda_given)
+    return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which));
+  return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which).alignment_lambda(f.lambda));
+}
+
 template <typename Solver>
 SMDF::Direction_field_result compute(const Mesh& mesh, std::vector<Kernel::Vector_3>& directions,
                                      const Field_request& f,
                                      SMDF::Principal_curvature_alignment which = SMDF::Principal_curvature_alignment::MAXIMUM)
 {
   auto dir = CGAL::make_property_map(directions);
-  auto np = CGAL::parameters::degree(f.degree).smoothness_parameter(f.s).sparse_linear_solver(Solver());
-  if(!f.aligned) return SMDF::compute_globally_optimal_directions(mesh, dir, np);
-  if(!f.lambda_given)
-    return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which));
-  return SMDF::compute_globally_optimal_directions(mesh, dir, np.principal_curvature_alignment(which).alignment_lambda(f.lambda));
+  auto np = CGAL::parameters::degree(f.degree).smoothness_parameter(f.s);
+  // the default backend as users get it (a solver given as a named parameter is used once, without reuse)
+  if constexpr(std::is_same<Solver, SMDF::Default_direction_field_solver>::value)
+    return compute_with(mesh, dir, f, which, np);
+  else
+    return compute_with(mesh, dir, f, which, np.sparse_linear_solver(Solver()));
 }
 
 struct Run
@@ -176,7 +190,7 @@ int main(int argc, char** argv)
   int& degree = request.degree;
   double& s = request.s;
   std::string backend = "default", csv_file;
-  bool huge_pages = true;
+  bool huge_pages = false;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
@@ -187,6 +201,7 @@ int main(int argc, char** argv)
     else if(a == "--backend" && i + 1 < argc) backend = argv[++i];
     else if(a == "--csv" && i + 1 < argc) csv_file = argv[++i];
     else if(a == "--no-huge-pages") huge_pages = false;
+    else if(a == "--huge-pages") huge_pages = true;
     else if(a == "--align" && i + 1 < argc) request.aligned = std::string(argv[++i]) == "curvature";
     else if(a == "--lambda" && i + 1 < argc) { request.lambda = std::stod(argv[++i]); request.lambda_given = true; }
     else if(a == "--help") { std::cout << "see the comment at the top of benchmark_direction_fields.cpp\n"; return 0; }

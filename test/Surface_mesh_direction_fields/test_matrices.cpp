@@ -337,6 +337,13 @@ static void check_assembly_against_scatter(Test_report& report, const std::strin
                name + ": the assembled pattern has the scattered number of entries");
   report.check(max_abs(em.energy - A) <= 1e-14 * max_abs(A) && max_abs(em.mass - M) <= 1e-14 * max_abs(M),
                name + ": gathered A and M equal the scattered ones");
+  // products with M taken from the faces (what a single call uses once A and M are freed)
+  const SI::Mass_operator mass_operator(m, ts, con);
+  SI::Complex_vector x(n);
+  for(Eigen::Index i = 0; i < n; ++i) x[i] = SI::Complex(std::cos(1.7 * i), std::sin(0.3 * i * i));
+  const SI::Complex_vector Mx = M * x;
+  report.check((mass_operator.times(comps.list[0], comps.local_index, x) - Mx).norm() <= 1e-14 * Mx.norm(),
+               name + ": the mass operator from the faces equals M x");
 }
 
 // Discrete Poincare-Hopf holds for any coefficients, also when some are

@@ -61,7 +61,8 @@ struct Component_report
   /// final relative residual \f$ \|A u - \lambda M u\| / (s_A \|M u\|) \f$, with
   /// \f$ s_A = \mathrm{tr}(A) / \mathrm{tr}(M) \f$ (a typical eigenvalue of the pencil)
   double residual = 0.;
-  /// `true` if the residual reached the requested tolerance
+  /// `true` if the residual reached the requested tolerance (also `true` for an aligned or
+  /// constrained field computed by a direct solve alone, without an eigen-solve)
   bool converged = false;
   /// sum of the integer indices `k` of the component's faces; equals `n * euler_characteristic`
   /// on a closed component (discrete Poincar&eacute;-Hopf)

@@ -32,6 +32,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/mass_operator.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 // the linear algebra: factorizations, the eigen-solve, the linear solves
@@ -140,6 +141,7 @@ class Globally_optimal_direction_field
     internal::Factored_matrix<SparseSolver> factored{solver};
     bool analyzed = false;
     double aligned_lambda = std::numeric_limits<double>::quiet_NaN();
+    double indefinite_lambda = std::numeric_limits<double>::quiet_NaN();  // the last lambda_t found too large
   };
   static constexpr bool detects_indefinite = internal::Factored_matrix<SparseSolver>::detects_indefinite;
 
@@ -257,8 +259,10 @@ public:
     update_matrices(result.degree, result.smoothness_parameter);
     result.timings.setup_ms = milliseconds_since(start);
 
-    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned and Constrained Fields")
-    const Field_requests requests = read_field_requests(np, result.degree, linear_solver);
+    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned and Constrained
+    //    Fields"); the guidance is computed while the factorizations that do not depend on it run
+    Field_requests requests = read_field_requests(np, result.degree);
+    read_guidance(np, result.degree, user_solver, linear_solver, requests, result.timings);
 
     // 3. one problem per component: the smallest eigenvector, or the aligned / constrained solve
     Vertex_field field(m_mesh.number_of_vertices());
@@ -284,6 +288,7 @@ public:
     result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     if(!m_keep_factorizations) m_factorizations.clear();
+    m_mass_operator.reset();
     m_user_solver.reset();
     m_distributed = nullptr;
     return result;
@@ -312,6 +317,7 @@ private:
   struct Field_requests
   {
     std::vector<Complex> guidance;  // q per vertex, before normalization; empty: none
+    bool has_guidance = false;      // whether the named parameters ask for one
     internal::Vertex_constraints constraints;
     internal::Alignment_request alignment;
   };
@@ -336,36 +342,99 @@ private:
     return options;
   }
 
+  // The constraints and the alignment request (the guidance is computed by the caller).
   template <typename NamedParameters>
-  Field_requests read_field_requests(const NamedParameters& np, int degree, SparseSolver& linear_solver) const
+  Field_requests read_field_requests(const NamedParameters& np, int degree) const
   {
     const internal::Point_to_array<GeomTraits> to_array{m_traits};
     Field_requests requests;
-    requests.guidance = internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np, m_vertex_of_index,
-                                                        m_normals, degree, linear_solver, to_array);
     requests.constraints =
       internal::vertex_constraints(m_mesh, m_tangent_spaces, np, m_vertex_of_index, m_normals, degree, to_array);
     internal::add_feature_constraints(*m_tmesh, np, m_index_of_vertex, m_mesh, m_tangent_spaces, m_normals, degree,
                                       requests.constraints);
-    requests.alignment = internal::alignment_request(np, !requests.guidance.empty());
+    requests.has_guidance = internal::requests_guidance(np);
+    requests.alignment = internal::alignment_request(np, requests.has_guidance);
     return requests;
   }
 
-  // Component c's guidance, normalized to ||q||_M = 1; `present` tells
-  // whether it has any (q = 0 otherwise).
-  static internal::Complex_vector component_guidance(const internal::Component& comp,
-                                                     const std::vector<Complex>& guidance,
-                                                     const internal::Complex_sparse_matrix& M, bool& present)
+  // requests.guidance, computed while the factorizations that do not depend
+  // on it run (counted as factorization time).
+  template <typename NamedParameters>
+  void read_guidance(const NamedParameters& np, int degree, bool user_solver, SparseSolver& linear_solver,
+                     Field_requests& requests, Direction_field_timings& timings)
   {
+    auto compute_guidance = [&] {
+      requests.guidance = internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np,
+                                                          m_vertex_of_index, m_normals, degree, linear_solver,
+                                                          internal::Point_to_array<GeomTraits>{m_traits});
+    };
+    const std::vector<std::size_t> early = factored_before_guidance(requests, user_solver);
+    if(early.empty())
+    {
+      compute_guidance();
+      return;
+    }
+    const auto start = Clock::now();
+    internal::parallel_invoke([&] { compute_guidance(); prepare_mass_operator(); }, [&] {
+      for(std::size_t c : early) factor_aligned_system(c, requests.alignment.lambda);
+    });
+    timings.factorization_ms += milliseconds_since(start);
+  }
+
+  // The components whose aligned system A - lambda_t M is known before the
+  // guidance: lambda_t given or the default 0, no constraint, nothing that
+  // needs lambda_1 first, a solver that certifies definiteness. (If the
+  // guidance then vanishes on a component, its field is the smoothest one and
+  // this factorization is not used.)
+  std::vector<std::size_t> factored_before_guidance(const Field_requests& requests, bool user_solver) const
+  {
+    std::vector<std::size_t> early;
+    if(!requests.has_guidance || user_solver || requests.alignment.weight_given || requests.alignment.eigenvalue_bound)
+      return early;
+    for(std::size_t c = 0; c < m_components.list.size(); ++c)
+      if(certifies_definiteness(c) && component_constraints(m_components.list[c], requests.constraints).empty())
+        early.push_back(c);
+    return early;
+  }
+
+  // Factors A - lambda M of component c for its aligned field (kept for
+  // solve_below_smallest_eigenvalue()). In a single call (the free function)
+  // A and M are freed before the factorization, the moment of peak memory:
+  // the aligned field needs only two products with M from then on, which
+  // internal::Mass_operator computes from the faces.
+  void factor_aligned_system(std::size_t c, double lambda)
+  {
+    typedef internal::Factored_matrix<SparseSolver> Factored;
+    Component_factorization& kept = component_factorization(c, false);
+    component_scale(c);  // kept beyond the matrices
+    const internal::Complex_sparse_matrix S =
+      Factored::matrix_to_factor(component_matrices(c).energy, component_matrices(c).mass, -lambda);
+    if(!m_keep_factorizations)  // swapped with empty ones: Eigen's assignment of an empty matrix keeps the memory
+    {
+      internal::Complex_sparse_matrix().swap(m_matrices[c].energy);
+      internal::Complex_sparse_matrix().swap(m_matrices[c].mass);
+    }
+    const bool factored_ok = kept.factored.factor_if_positive_definite(S, kept.analyzed);
+    kept.analyzed = true;
+    kept.aligned_lambda = factored_ok ? lambda : std::numeric_limits<double>::quiet_NaN();
+    kept.indefinite_lambda = factored_ok ? std::numeric_limits<double>::quiet_NaN() : lambda;
+  }
+
+  // M q for component c's guidance q normalized to ||q||_M = 1 (the right-hand
+  // side of the aligned system); `present` tells whether it has any (zero otherwise).
+  internal::Complex_vector guidance_load(std::size_t c, const std::vector<Complex>& guidance, bool& present)
+  {
+    const internal::Component& comp = m_components.list[c];
     const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
     internal::Complex_vector q = internal::Complex_vector::Zero(nc);
     present = false;
     if(guidance.empty()) return q;
     for(Eigen::Index i = 0; i < nc; ++i) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
-    const double q_norm = internal::m_norm(M, q);
+    internal::Complex_vector Mq = mass_times(c, q);
+    const double q_norm = std::sqrt((std::max)(0., q.dot(Mq).real()));  // dot conjugates its left argument
     present = q_norm > 0.;
-    if(present) q /= q_norm;
-    return q;
+    if(present) Mq /= q_norm;
+    return Mq;
   }
 
   // Component c's share of the constraints (empty if it has none).
@@ -395,9 +464,7 @@ private:
     Component_report& report = result.components[c];
     internal::describe_component(m_mesh, comp, report);
     bool aligned = false;
-    const internal::Complex_vector q =
-      requests.guidance.empty() ? internal::Complex_vector::Zero(static_cast<Eigen::Index>(comp.vertices.size()))
-                                : component_guidance(comp, requests.guidance, component_matrices(c).mass, aligned);
+    const internal::Complex_vector Mq = guidance_load(c, requests.guidance, aligned);
     const internal::Constraints constraints = component_constraints(comp, requests.constraints);
     const bool constrained = !constraints.empty();
 
@@ -412,7 +479,7 @@ private:
     if(needs_eigenvalue)
       u = smallest_eigenvector(c, options, user_solver, report, result.timings);
     if(!smoothest)
-      u = aligned_field(c, q, aligned, constraints, requests.alignment, options, user_solver, linear_solver, report,
+      u = aligned_field(c, Mq, aligned, constraints, requests.alignment, options, user_solver, linear_solver, report,
                         result.timings);
 
     double area = 0.;
@@ -448,29 +515,29 @@ private:
   // The aligned and/or constrained field of component c: (A - lambda_t M) u = M q
   // with u fixed on the constrained vertices (manual, "Aligned and Constrained
   // Fields"), normalized to ||u||_M = 1.
-  internal::Complex_vector aligned_field(std::size_t c, const internal::Complex_vector& q, bool aligned,
+  internal::Complex_vector aligned_field(std::size_t c, const internal::Complex_vector& Mq, bool aligned,
                                          const internal::Constraints& constraints,
                                          const internal::Alignment_request& request,
                                          const internal::Eigen_solve_options& options, bool user_solver,
                                          SparseSolver& linear_solver, Component_report& report,
                                          Direction_field_timings& timings)
   {
-    const internal::Complex_sparse_matrix& A = component_matrices(c).energy;
-    const internal::Complex_sparse_matrix& M = component_matrices(c).mass;
-    const internal::Complex_vector Mq = M * q;
-    const double scale = internal::eigenvalue_scale(A, M);
     internal::Complex_vector u;
     double lambda = request.lambda;
+    double u_mass = std::numeric_limits<double>::quiet_NaN();  // u^* M u, if computed on the way
+    if(std::isnan(report.eigenvalue)) report.converged = true;  // a direct solve (unless an eigen-solve follows)
     if(aligned && request.weight_given)
     {
       std::size_t evaluations = 0;
       internal::Factored_matrix<SparseSolver> factored(linear_solver);
-      lambda = internal::find_lambda_for_weight(A, M, Mq, constraints, report.eigenvalue, request.weight, scale,
+      lambda = internal::find_lambda_for_weight(component_matrices(c).energy, component_matrices(c).mass, Mq,
+                                                constraints, report.eigenvalue, request.weight, component_scale(c),
                                                 factored, u, evaluations);
       report.iterations += evaluations;
     }
     else if(aligned && !request.lambda_given)
-      u = solve_with_default_lambda(c, Mq, constraints, options, user_solver, linear_solver, report, timings, lambda);
+      u = solve_with_default_lambda(c, Mq, constraints, options, user_solver, linear_solver, report, timings, lambda,
+                                    u_mass);
     else
     {
       // a lambda_t given (or 0 for a field with constraints only): admissible
@@ -487,8 +554,9 @@ private:
       }
     }
     report.lambda = lambda;
-    report.alignment_weight = aligned ? internal::alignment_weight_of(M, u) : 0.;
-    const double u_norm = internal::m_norm(M, u);
+    if(std::isnan(u_mass)) u_mass = u.dot(mass_times(c, u)).real();
+    const double u_norm = std::sqrt((std::max)(0., u_mass));
+    report.alignment_weight = aligned ? 1. / (1. + u_norm) : 0.;  // as internal::alignment_weight_of()
     if(u_norm > 0.) u /= u_norm;
     return u;
   }
@@ -503,20 +571,25 @@ private:
                                                      const internal::Constraints& constraints,
                                                      const internal::Eigen_solve_options& options, bool user_solver,
                                                      SparseSolver& linear_solver, Component_report& report,
-                                                     Direction_field_timings& timings, double& lambda)
+                                                     Direction_field_timings& timings, double& lambda,
+                                                     double& u_mass)
   {
-    const internal::Complex_sparse_matrix& A = component_matrices(c).energy;
-    const internal::Complex_sparse_matrix& M = component_matrices(c).mass;
-    const double scale = internal::eigenvalue_scale(A, M);
+    const double scale = component_scale(c);
     internal::Complex_vector u;
     if(std::isnan(report.eigenvalue))
     {
       lambda = 0.;
       if(solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
       {
-        const double rayleigh_quotient = u.dot(A * u).real() / u.dot(M * u).real();
+        // without constraints (A - lambda M) u = M q gives u^* A u = u^* M q + lambda u^* M u
+        // (A itself may have been freed: see factor_aligned_system())
+        u_mass = u.dot(mass_times(c, u)).real();
+        const double rayleigh_quotient = constraints.empty()
+                                           ? u.dot(Mq).real() / u_mass + lambda
+                                           : u.dot(component_matrices(c).energy * u).real() / u_mass;
         if(rayleigh_quotient >= 1e-10 * scale) return u;
       }
+      u_mass = std::numeric_limits<double>::quiet_NaN();
       smallest_eigenvector(c, options, user_solver, report, timings);
     }
     lambda = (std::min)(0., report.eigenvalue - 1e-6 * scale);
@@ -536,12 +609,12 @@ private:
   {
     if(distributes(c))
       return distributed_shifted_solve(c, lambda, Mq, constraints, u);
-    const internal::Shifted_system system(component_matrices(c).energy, component_matrices(c).mass, lambda,
-                                          constraints);
     const auto start = Clock::now();
     if(!constraints.empty())
     {
       // the matrix of the free vertices has a pattern of its own: a solver of its own
+      const internal::Shifted_system system(component_matrices(c).energy, component_matrices(c).mass, lambda,
+                                            constraints);
       internal::Factored_matrix<SparseSolver> factored(linear_solver);
       const bool factored_ok = system.factor(factored, false, detects_indefinite);
       timings.factorization_ms += milliseconds_since(start);
@@ -549,15 +622,19 @@ private:
       return factored_ok;
     }
     Component_factorization& kept = component_factorization(c, user_solver);
+    if(kept.indefinite_lambda == lambda) return false;  // factored and refused already
     if(!(kept.aligned_lambda == lambda))
     {
+      const internal::Shifted_system system(component_matrices(c).energy, component_matrices(c).mass, lambda,
+                                            constraints);
       const bool factored_ok = system.factor(kept.factored, kept.analyzed && !user_solver, detects_indefinite);
       kept.analyzed = true;
       kept.aligned_lambda = factored_ok ? lambda : std::numeric_limits<double>::quiet_NaN();
+      kept.indefinite_lambda = factored_ok ? std::numeric_limits<double>::quiet_NaN() : lambda;
       timings.factorization_ms += milliseconds_since(start);
       if(!factored_ok) return false;
     }
-    u = system.solve(kept.factored, Mq);
+    u = kept.factored.solve(Mq);  // without constraints the system is A - lambda M itself
     release_factorization(c, user_solver);
     return true;
   }
@@ -623,26 +700,54 @@ private:
     if(!(m_has_matrices && s == m_s))
     {
       m_matrices.clear();  // free the old matrices before building the new ones
+      m_eigenvalue_scales.assign(m_components.list.size(), std::numeric_limits<double>::quiet_NaN());
+      m_mass_operator.reset();  // its kernels depend on the degree
       if(m_distributed)  // the first process assembles only what it solves or what the aligned field reads
         m_matrices.resize(m_components.list.size());
       else
         m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
       for(auto& kept : m_factorizations)  // they factor the old matrices
-        if(kept) kept->aligned_lambda = std::numeric_limits<double>::quiet_NaN();
+        if(kept) kept->aligned_lambda = kept->indefinite_lambda = std::numeric_limits<double>::quiet_NaN();
       m_has_matrices = true;
       m_degree = degree;
       m_s = s;
     }
   }
 
-  // A and M of component c, assembled when first needed (see update_matrices()).
+  // A and M of component c, assembled when first needed (see update_matrices())
+  // or when A was freed by factor_aligned_system().
   const internal::Energy_and_mass& component_matrices(std::size_t c)
   {
     internal::Energy_and_mass& em = m_matrices[c];
-    if(em.energy.rows() == 0)
+    if(em.energy.rows() == 0 || em.mass.rows() == 0)
       em = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components.list[c],
                                               m_components.local_index, m_s);
     return em;
+  }
+
+  // trace(A) / trace(M) of component c (internal::eigenvalue_scale()), kept
+  // while A and M are those of the current n and s, also when freed.
+  double component_scale(std::size_t c)
+  {
+    double& scale = m_eigenvalue_scales[c];
+    if(std::isnan(scale)) scale = internal::eigenvalue_scale(component_matrices(c).energy, component_matrices(c).mass);
+    return scale;
+  }
+
+  // M x for component c: with M, or from the faces once factor_aligned_system() freed it.
+  internal::Complex_vector mass_times(std::size_t c, const internal::Complex_vector& x)
+  {
+    const internal::Complex_sparse_matrix& M = m_matrices[c].mass;
+    if(M.rows() != 0 || distributes(c) || m_keep_factorizations) return component_matrices(c).mass * x;
+    prepare_mass_operator();
+    return m_mass_operator->times(m_components.list[c], m_components.local_index, x);
+  }
+
+  // The products with M from the faces, for a call that frees the matrices.
+  void prepare_mass_operator()
+  {
+    if(!m_keep_factorizations && !m_mass_operator)
+      m_mass_operator = std::make_unique<internal::Mass_operator>(m_mesh, m_tangent_spaces, m_connection);
   }
 
   // Whether component c is spread over the processes of a distributed backend.
@@ -719,6 +824,8 @@ private:
   double m_s = 0.;
   internal::Connection m_connection;
   std::vector<internal::Energy_and_mass> m_matrices;
+  std::vector<double> m_eigenvalue_scales;                 // per component, NaN: not computed
+  std::unique_ptr<internal::Mass_operator> m_mass_operator;  // products with M once it is freed, during a call
 
   bool m_keep_factorizations = true;
   std::vector<std::unique_ptr<Component_factorization> > m_factorizations;

@@ -145,6 +145,19 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
   return q;
 }
 
+// Whether the named parameters ask for a guidance field (guidance_coefficients()
+// then returns one value per vertex, possibly all zero).
+template <typename NamedParameters>
+bool requests_guidance(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  return choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment),
+                          Principal_curvature_alignment::NONE) != Principal_curvature_alignment::NONE ||
+         !is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value;
+}
+
 // How strongly the field follows its guidance: lambda_t, or the alignment
 // weight t from which lambda_t is found (user manual, "Aligned and Constrained Fields").
 struct Alignment_request

@@ -61,6 +61,13 @@ struct Local_matrices
   double energy_diagonal[3], mass_diagonal[3];
 };
 
+// The factor of the transport in the off-diagonal local mass entries of face
+// f, divided by its area (see the note on placement and conjugation above).
+inline Complex conjugated_mass_kernel(const Connection& con, std::size_t f)
+{
+  return std::conj(mass_factor(con.holonomy[f]));
+}
+
 // The local matrices of face f for the energy E_s (s in [-1, 1]).
 inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces& ts, const Connection& con,
                                      std::size_t f, double s)
@@ -72,7 +79,7 @@ inline Local_matrices local_matrices(const Indexed_mesh& m, const Tangent_spaces
   // conjugated kernels: see the note on placement and conjugation above
   const Complex f1 = std::conj(dirichlet_kernel_f1(omega));
   const Complex f2 = std::conj(dirichlet_kernel_f2(omega));
-  const Complex mass_kernel = std::conj(mass_factor(omega));
+  const Complex mass_kernel = conjugated_mass_kernel(con, f);
   const Complex I(0., 1.);
   for(int c = 0; c < 3; ++c)
   {
