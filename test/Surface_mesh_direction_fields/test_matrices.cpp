@@ -344,6 +344,22 @@ static void check_assembly_against_scatter(Test_report& report, const std::strin
   const SI::Complex_vector Mx = M * x;
   report.check((mass_operator.times(comps.list[0], comps.local_index, x) - Mx).norm() <= 1e-14 * Mx.norm(),
                name + ": the mass operator from the faces equals M x");
+  // the matrix a single aligned solve factors, assembled without A and M: the
+  // lower triangle of A + shift M as from A and M, bit for bit, and the same
+  // trace(A) / trace(M)
+  const double shift = -0.37;
+  std::vector<SI::Shifted_lower_triangle> direct;
+  const std::vector<SI::Energy_and_mass> none =
+    SI::assemble_energy_and_mass(m, ts, con, comps, s, std::vector<double>(comps.list.size(), shift), &direct);
+  const SI::Complex_sparse_matrix expected = SI::shifted_lower_triangle(em.energy, em.mass, shift);
+  const SI::Complex_sparse_matrix& got = direct[0].matrix;
+  report.check(none[0].energy.rows() == 0 && got.rows() == n && got.nonZeros() == expected.nonZeros() &&
+                 std::equal(got.outerIndexPtr(), got.outerIndexPtr() + n + 1, expected.outerIndexPtr()) &&
+                 std::equal(got.innerIndexPtr(), got.innerIndexPtr() + got.nonZeros(), expected.innerIndexPtr()) &&
+                 std::equal(got.valuePtr(), got.valuePtr() + got.nonZeros(), expected.valuePtr()),
+               name + ": lower(A + shift M) assembled directly equals the one from A and M, bit for bit");
+  report.check(direct[0].eigenvalue_scale == SI::eigenvalue_scale(em.energy, em.mass),
+               name + ": the direct assembly's trace(A) / trace(M) is eigenvalue_scale(A, M)");
 }
 
 // Discrete Poincare-Hopf holds for any coefficients, also when some are

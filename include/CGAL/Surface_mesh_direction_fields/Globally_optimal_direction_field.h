@@ -255,16 +255,18 @@ public:
     if constexpr(!is_default_parameter<NamedParameters, internal_np::distributed_solver_t>::value)
       m_distributed = &backend;
 
-    // 1. the connection of degree n and the matrices of (n, s), unless kept from the last call
-    update_matrices(result.degree, result.smoothness_parameter);
+    // 1. the hard constraints and the alignment request (manual, "Aligned and Constrained Fields")
+    Field_requests requests = read_field_requests(np, result.degree);
+    const std::vector<std::size_t> early = factored_before_guidance(requests, user_solver);
+
+    // 2. the connection of degree n and the matrices of (n, s), unless kept from the last call
+    update_matrices(result.degree, result.smoothness_parameter, shift_only(early, requests.alignment.lambda));
     result.timings.setup_ms = milliseconds_since(start);
 
-    // 2. what the field must follow: guidance q and hard constraints (manual, "Aligned and Constrained
-    //    Fields"); the guidance is computed while the factorizations that do not depend on it run
-    Field_requests requests = read_field_requests(np, result.degree);
-    read_guidance(np, result.degree, user_solver, linear_solver, requests, result.timings);
+    // 3. the guidance q, computed while the factorizations that do not depend on it run
+    read_guidance(np, result.degree, early, linear_solver, requests, result.timings);
 
-    // 3. one problem per component: the smallest eigenvector, or the aligned / constrained solve
+    // 4. one problem per component: the smallest eigenvector, or the aligned / constrained solve
     Vertex_field field(m_mesh.number_of_vertices());
     result.components.resize(m_components.list.size());
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
@@ -276,7 +278,7 @@ public:
       result.converged = result.converged && report.converged;
     }
 
-    // 4. the outputs: singular faces with their indices, unit directions in 3D, magnitudes
+    // 5. the outputs: singular faces with their indices, unit directions in 3D, magnitudes
     report_singularities(field.coefficients,
                          choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
                                           CGAL::Emptyset_iterator()),
@@ -288,6 +290,7 @@ public:
     result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     if(!m_keep_factorizations) m_factorizations.clear();
+    m_shifted_lower.clear();
     m_mass_operator.reset();
     m_user_solver.reset();
     m_distributed = nullptr;
@@ -360,15 +363,14 @@ private:
   // requests.guidance, computed while the factorizations that do not depend
   // on it run (counted as factorization time).
   template <typename NamedParameters>
-  void read_guidance(const NamedParameters& np, int degree, bool user_solver, SparseSolver& linear_solver,
-                     Field_requests& requests, Direction_field_timings& timings)
+  void read_guidance(const NamedParameters& np, int degree, const std::vector<std::size_t>& early,
+                     SparseSolver& linear_solver, Field_requests& requests, Direction_field_timings& timings)
   {
     auto compute_guidance = [&] {
       requests.guidance = internal::guidance_coefficients(m_mesh, m_tangent_spaces, m_components, np,
                                                           m_vertex_of_index, m_normals, degree, linear_solver,
                                                           internal::Point_to_array<GeomTraits>{m_traits});
     };
-    const std::vector<std::size_t> early = factored_before_guidance(requests, user_solver);
     if(early.empty())
     {
       compute_guidance();
@@ -399,16 +401,23 @@ private:
 
   // Factors A - lambda M of component c for its aligned field (kept for
   // solve_below_smallest_eigenvalue()). In a single call (the free function)
-  // A and M are freed before the factorization, the moment of peak memory:
-  // the aligned field needs only two products with M from then on, which
-  // internal::Mass_operator computes from the faces.
+  // the aligned field needs only two products with M besides this
+  // factorization, which internal::Mass_operator computes from the faces: the
+  // assembly then gives the matrix to factor directly, without A and M (see
+  // shift_only()), or A and M are freed before the factorization, the moment
+  // of peak memory.
   void factor_aligned_system(std::size_t c, double lambda)
   {
     typedef internal::Factored_matrix<SparseSolver> Factored;
     Component_factorization& kept = component_factorization(c, false);
-    component_scale(c);  // kept beyond the matrices
-    const internal::Complex_sparse_matrix S =
-      Factored::matrix_to_factor(component_matrices(c).energy, component_matrices(c).mass, -lambda);
+    internal::Complex_sparse_matrix S;
+    if(c < m_shifted_lower.size() && m_shifted_lower[c].matrix.rows() != 0 && m_shifted_lower_shift == -lambda)
+      S.swap(m_shifted_lower[c].matrix);
+    else
+    {
+      component_scale(c);  // kept beyond the matrices
+      S = Factored::matrix_to_factor(component_matrices(c).energy, component_matrices(c).mass, -lambda);
+    }
     if(!m_keep_factorizations)  // swapped with empty ones: Eigen's assignment of an empty matrix keeps the memory
     {
       internal::Complex_sparse_matrix().swap(m_matrices[c].energy);
@@ -690,7 +699,21 @@ private:
       put(vmm, m_vertex_of_index[i], magnitudes[i]);
   }
 
-  void update_matrices(int degree, double s)
+  // The shift per component (NaN: none) for which the assembly gives only
+  // the lower triangle of A + shift M, without A and M: the components whose
+  // aligned system is factored before the guidance (`early`), in a single
+  // call (the free function), with a solver that reads that triangle only.
+  std::vector<double> shift_only(const std::vector<std::size_t>& early, double lambda) const
+  {
+    std::vector<double> shifts;
+    if(m_keep_factorizations || !internal::Factored_matrix<SparseSolver>::factors_lower_triangle || early.empty())
+      return shifts;
+    shifts.assign(m_components.list.size(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t c : early) shifts[c] = -lambda;
+    return shifts;
+  }
+
+  void update_matrices(int degree, double s, const std::vector<double>& shift_only = {})
   {
     if(!(m_has_matrices && degree == m_degree))
     {
@@ -702,10 +725,16 @@ private:
       m_matrices.clear();  // free the old matrices before building the new ones
       m_eigenvalue_scales.assign(m_components.list.size(), std::numeric_limits<double>::quiet_NaN());
       m_mass_operator.reset();  // its kernels depend on the degree
+      m_shifted_lower.clear();
       if(m_distributed)  // the first process assembles only what it solves or what the aligned field reads
         m_matrices.resize(m_components.list.size());
       else
-        m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s);
+        m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s,
+                                                        shift_only, &m_shifted_lower);
+      for(std::size_t c = 0; c < m_shifted_lower.size(); ++c)
+        if(m_shifted_lower[c].matrix.rows() != 0) m_eigenvalue_scales[c] = m_shifted_lower[c].eigenvalue_scale;
+      for(double shift : shift_only)
+        if(!std::isnan(shift)) m_shifted_lower_shift = shift;
       for(auto& kept : m_factorizations)  // they factor the old matrices
         if(kept) kept->aligned_lambda = kept->indefinite_lambda = std::numeric_limits<double>::quiet_NaN();
       m_has_matrices = true;
@@ -714,8 +743,9 @@ private:
     }
   }
 
-  // A and M of component c, assembled when first needed (see update_matrices())
-  // or when A was freed by factor_aligned_system().
+  // A and M of component c, assembled when first needed (see update_matrices()):
+  // also when factor_aligned_system() freed them, or the assembly gave only
+  // the matrix it factors (see shift_only()).
   const internal::Energy_and_mass& component_matrices(std::size_t c)
   {
     internal::Energy_and_mass& em = m_matrices[c];
@@ -824,6 +854,9 @@ private:
   double m_s = 0.;
   internal::Connection m_connection;
   std::vector<internal::Energy_and_mass> m_matrices;
+  // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
+  std::vector<internal::Shifted_lower_triangle> m_shifted_lower;
+  double m_shifted_lower_shift = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> m_eigenvalue_scales;                 // per component, NaN: not computed
   std::unique_ptr<internal::Mass_operator> m_mass_operator;  // products with M once it is freed, during a call
 

@@ -95,6 +95,8 @@ public:
   // A solver seen only through CGAL's concept cannot tell whether the matrix
   // it factored was positive definite.
   static constexpr bool detects_indefinite = false;
+  // whether matrix_to_factor() is the lower triangle only
+  static constexpr bool factors_lower_triangle = false;
 
   explicit Factored_matrix(SparseSolver& solver) : m_solver(solver) {}
 
@@ -396,6 +398,7 @@ public:
   }
 
   static constexpr bool detects_indefinite = Detects_indefinite<EigenSolver>::value;
+  static constexpr bool factors_lower_triangle = Reads_lower_triangle<EigenSolver>::value;
 
   explicit Factored_matrix(Traits& traits) : m_traits(traits) {}
 

@@ -29,6 +29,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <memory>
 #include <new>
@@ -245,17 +246,125 @@ inline Energy_and_mass assemble_component(const Indexed_mesh& m, const Local_mat
   return em;
 }
 
-// A and M of every component.
+// The lower triangle (diagonal included) of A + shift M of one component,
+// without A and M, and trace(A) / trace(M): what a single solve with A +
+// shift M needs (the aligned field of a single call; see
+// Globally_optimal_direction_field::factor_aligned_system()). The values are
+// those of shifted_lower_triangle(A, M, shift), bit for bit.
+struct Shifted_lower_triangle
+{
+  Complex_sparse_matrix matrix;
+  double eigenvalue_scale = 0.;  // trace(A) / trace(M)
+};
+
+// The number of rows jl or below in local column jl, assuming that the fan of
+// its vertex v repeats no neighbour: v itself, the vertex after v in each
+// corner (each neighbour once), and the last corner's vertex before v at a
+// border vertex (see gather_column()).
+inline Complex_sparse_matrix::StorageIndex lower_column_size(const Indexed_mesh& m,
+                                                             const std::vector<Compact_index>& local_index,
+                                                             std::size_t v, std::size_t jl)
+{
+  Complex_sparse_matrix::StorageIndex size = 1;
+  auto below = [&](std::size_t w) { return static_cast<std::size_t>(local_index[w]) > jl; };
+  for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
+  {
+    const std::size_t corner = m.fan_corners[k];
+    size += below(m.faces[corner / 3][(corner % 3 + 1) % 3]) ? 1 : 0;
+  }
+  if(m.is_border_vertex[v] && m.fan_size(v) > 0)
+  {
+    const std::size_t last = m.fan_corners[m.fan_offsets[v + 1] - 1];
+    size += below(m.faces[last / 3][(last % 3 + 2) % 3]) ? 1 : 0;
+  }
+  return size;
+}
+
+inline Shifted_lower_triangle assemble_shifted_lower_triangle(const Indexed_mesh& m, const Local_matrix_array& local,
+                                                              const Component& comp,
+                                                              const std::vector<Compact_index>& local_index,
+                                                              double shift)
+{
+  typedef Complex_sparse_matrix::StorageIndex Storage_index;
+  const std::size_t nc = comp.vertices.size();
+  std::vector<Storage_index> column_size(nc);
+  parallel_for_each_index(nc, [&](std::size_t jl) {
+    column_size[jl] = lower_column_size(m, local_index, comp.vertices[jl], jl);
+  });
+  std::vector<double> energy_diagonal(nc), mass_diagonal(nc);
+  Shifted_lower_triangle result;
+  Complex_sparse_matrix& S = result.matrix;
+  S.resize(static_cast<Eigen::Index>(nc), static_cast<Eigen::Index>(nc));
+  // Fills the columns whose size is right; returns false if one is not (a
+  // multiple edge), with the true sizes in column_size.
+  auto fill = [&]() {
+    Storage_index* outer = S.outerIndexPtr();
+    outer[0] = 0;
+    for(std::size_t jl = 0; jl < nc; ++jl) outer[jl + 1] = outer[jl] + column_size[jl];
+    S.resizeNonZeros(outer[nc]);
+    Storage_index* inner = S.innerIndexPtr();
+    Complex* value = S.valuePtr();
+    std::vector<unsigned char> size_ok(nc, 1);
+    parallel_for_each_range(nc, [&](std::size_t begin, std::size_t end) {
+      std::vector<Column_entry> column;
+      for(std::size_t jl = begin; jl < end; ++jl)
+      {
+        gather_column(m, local, local_index, comp.vertices[jl], column);
+        const auto first = std::lower_bound(column.begin(), column.end(), static_cast<Eigen::Index>(jl),
+                                            [](const Column_entry& e, Eigen::Index row) { return e.row < row; });
+        energy_diagonal[jl] = first->energy.real();
+        mass_diagonal[jl] = first->mass.real();
+        if(column.end() - first != column_size[jl])
+        {
+          size_ok[jl] = 0;
+          column_size[jl] = static_cast<Storage_index>(column.end() - first);
+          continue;
+        }
+        Storage_index p = outer[jl];
+        for(auto e = first; e != column.end(); ++e, ++p)
+        {
+          inner[p] = static_cast<Storage_index>(e->row);
+          value[p] = e->energy + shift * e->mass;
+        }
+      }
+    });
+    return std::find(size_ok.begin(), size_ok.end(), 0) == size_ok.end();
+  };
+  if(!fill())
+  {
+    const bool filled = fill();
+    CGAL_assertion(filled);
+    CGAL_USE(filled);
+  }
+  double energy_trace = 0., mass_trace = 0.;
+  for(std::size_t jl = 0; jl < nc; ++jl)
+  {
+    energy_trace += energy_diagonal[jl];
+    mass_trace += mass_diagonal[jl];
+  }
+  result.eigenvalue_scale = energy_trace / mass_trace;
+  return result;
+}
+
+// A and M of every component; except, for the components with a number in
+// `shift_only` (NaN for the others, or empty), only the lower triangle of
+// A + shift M, into `shifted` (their A and M are left empty).
 inline std::vector<Energy_and_mass> assemble_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
                                                              const Connection& con, const Components& comps,
-                                                             double s)
+                                                             double s, const std::vector<double>& shift_only = {},
+                                                             std::vector<Shifted_lower_triangle>* shifted = nullptr)
 {
   Local_matrix_array local(ts.face_area.size());
   compute_all_local_matrices(m, ts, con, s, local);
-  std::vector<Energy_and_mass> matrices;
-  matrices.reserve(comps.list.size());
-  for(const Component& comp : comps.list)
-    matrices.push_back(assemble_component(m, local, comp, comps.local_index));
+  std::vector<Energy_and_mass> matrices(comps.list.size());
+  if(shifted != nullptr) shifted->assign(comps.list.size(), Shifted_lower_triangle());
+  for(std::size_t c = 0; c < comps.list.size(); ++c)
+  {
+    if(shifted != nullptr && c < shift_only.size() && !std::isnan(shift_only[c]))
+      (*shifted)[c] = assemble_shifted_lower_triangle(m, local, comps.list[c], comps.local_index, shift_only[c]);
+    else
+      matrices[c] = assemble_component(m, local, comps.list[c], comps.local_index);
+  }
   return matrices;
 }
 
