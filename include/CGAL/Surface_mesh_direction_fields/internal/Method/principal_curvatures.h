@@ -99,14 +99,20 @@ inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size
   ring.clear();
   taken.clear();
   taken.insert(v);
+  // The neighbours of w: the vertex after w in each corner of its fan, and at
+  // a border vertex also the vertex before w in the last corner (the
+  // counter-clockwise fan repeats each other one as the next corner's vertex
+  // after w).
+  auto add = [&](std::size_t u) {
+    if(ring.size() + 1 < std::size_t(max_fit_points) && taken.insert(u)) ring.push_back(u);
+  };
   auto add_neighbours = [&](std::size_t w) {
     for(std::size_t corner : m.fan(w))
+      add(m.faces[corner / 3][(corner % 3 + 1) % 3]);
+    if(m.is_border_vertex[w] && m.fan_size(w) > 0)
     {
-      const auto& t = m.faces[corner / 3];
-      const int c = static_cast<int>(corner % 3);
-      for(std::size_t u : {std::size_t(t[(c + 1) % 3]), std::size_t(t[(c + 2) % 3])})
-        if(ring.size() + 1 < std::size_t(max_fit_points) && taken.insert(u))
-          ring.push_back(u);
+      const std::size_t last = m.fan_corners[m.fan_offsets[w + 1] - 1];
+      add(m.faces[last / 3][(last % 3 + 2) % 3]);
     }
   };
   add_neighbours(v);
