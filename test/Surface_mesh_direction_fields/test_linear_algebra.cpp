@@ -133,6 +133,39 @@ static void check_shifted_solve(Test_report& report)
                "constrained values are kept exactly");
 }
 
+// An analysis from the pattern alone (Factored_matrix::analyze_pattern(),
+// which runs beside the coarse estimate) is used by the next factorization
+// when its matrix has that pattern (the same solution, bit for bit, as with
+// an analysis of that matrix), and redone when it has not.
+static void check_analysis_from_pattern(Test_report& report)
+{
+  const Eigen::Index n = 300;
+  const Cycle_pencil p = magnetic_cycle(n, 0.4);
+  const double shift = 0.05;
+  SI::Complex_dense_matrix b(n, 1);
+  for(Eigen::Index j = 0; j < n; ++j) b(j, 0) = Complex(std::sin(0.7 * j), std::cos(0.05 * j * j));
+  Solver reference_solver;
+  SI::Factored_matrix<Solver> reference(reference_solver);
+  reference.factor_shifted(p.A, p.M, shift);
+  const SI::Complex_dense_matrix expected = reference.solve(b);
+
+  Solver solver;
+  SI::Factored_matrix<Solver> ahead(solver);
+  ahead.analyze_pattern(p.A);
+  ahead.factor_shifted(p.A, p.M, shift, true);
+  report.check(ahead.solve(b) == expected, "a factorization on the analysis of its pattern solves bit for bit the same");
+
+  // a pattern that is not the matrix's (the diagonal only): analyzed again
+  SI::Complex_sparse_matrix diagonal(n, n);
+  diagonal.setIdentity();
+  Solver other_solver;
+  SI::Factored_matrix<Solver> wrong(other_solver);
+  wrong.analyze_pattern(diagonal);
+  wrong.factor_shifted(p.A, p.M, shift, true);
+  report.check((wrong.solve(b) - expected).norm() <= 1e-12 * expected.norm(),
+               "a factorization whose matrix does not have the analyzed pattern analyzes it again");
+}
+
 int main()
 {
   Test_report report("test_linear_algebra");
@@ -140,5 +173,6 @@ int main()
   check_smallest_eigenpair(report, 200, -2.5);
   check_smallest_eigenpair(report, 12000, 1.1);  // above the coarse threshold: the coarse start is used
   check_shifted_solve(report);
+  check_analysis_from_pattern(report);
   return report.finish();
 }

@@ -468,16 +468,30 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   const Eigen::Index n = A.rows();
   Eigen_solve_result result;
   const Hermitian_pencil pencil(A, M);
+  Eigen_solve_options options_after_analysis = options;
 
   const auto t_start = Clock::now();
   Coarse_estimate estimate;
-  if(n >= options.coarse_threshold)
-    estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
+  auto estimate_coarsely = [&] {
+    if(n >= options.coarse_threshold)
+      estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
+  };
+  // The symbolic analysis of A - sigma M does not depend on the shift sigma
+  // that the coarse estimate gives: it runs beside it, on A's pattern (which
+  // is M's), unless an earlier factorization's is reused.
+  if(Factored_matrix<SparseSolver>::analyzes_patterns && pencil.same_pattern && !options.same_pattern &&
+     n >= options.coarse_threshold)
+  {
+    parallel_invoke(estimate_coarsely, [&] { factored.analyze_pattern(A); });
+    options_after_analysis.same_pattern = true;
+  }
+  else
+    estimate_coarsely();
   result.coarse_upper_bound = estimate.bound;
   result.coarse_iterations = estimate.iterations;
 
   const auto t0 = Clock::now();
-  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options, factored, result);
+  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis, factored, result);
   const auto t1 = Clock::now();
 
   const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));

@@ -33,6 +33,7 @@
 #include <memory>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 // The one place where the package talks to the sparse solver: factor a
 // Hermitian positive definite matrix (given, or as A + shift M) once, then
@@ -99,6 +100,10 @@ public:
   static constexpr bool factors_lower_triangle = false;
 
   explicit Factored_matrix(SparseSolver& solver) : m_solver(solver) {}
+
+  // The generic version analyzes nothing ahead (see the specialization).
+  static constexpr bool analyzes_patterns = false;
+  void analyze_pattern(const Complex_sparse_matrix&) {}
 
   // `same_pattern` is a hint that the generic version ignores.
   void factor(const Complex_sparse_matrix& S, bool /*same_pattern*/ = false)
@@ -377,13 +382,35 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
 
   Parallel_supernodal_solve m_parallel_solve;
   bool m_new_structure = false;
+  // the compressed pattern (column starts, rows) of the matrix to factor
+  // that analyze_pattern() analyzed, until a factorization checks it
+  std::vector<Complex_sparse_matrix::StorageIndex> m_pending_starts, m_pending_rows;
 
   void analyze(const Complex_sparse_matrix& S, bool same_pattern)
   {
+    if(!m_pending_starts.empty())
+    {
+      // the first factorization after analyze_pattern(): its analysis is
+      // used if S has exactly that pattern, and redone otherwise
+      const bool matches = has_pending_pattern(S);
+      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_starts);
+      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_rows);
+      m_new_structure = true;
+      if(matches) return;
+      same_pattern = false;
+    }
     m_new_structure = !(same_pattern && m_analyzed);
     if(m_new_structure)
       analyze_with_ordering_for_size(m_traits.solver(), S, 0);
     m_analyzed = true;
+  }
+
+  bool has_pending_pattern(const Complex_sparse_matrix& S) const
+  {
+    return S.isCompressed() && static_cast<std::size_t>(S.outerSize()) + 1 == m_pending_starts.size() &&
+           static_cast<std::size_t>(S.nonZeros()) == m_pending_rows.size() &&
+           std::equal(m_pending_starts.begin(), m_pending_starts.end(), S.outerIndexPtr()) &&
+           std::equal(m_pending_rows.begin(), m_pending_rows.end(), S.innerIndexPtr());
   }
 
 public:
@@ -401,6 +428,20 @@ public:
   static constexpr bool factors_lower_triangle = Reads_lower_triangle<EigenSolver>::value;
 
   explicit Factored_matrix(Traits& traits) : m_traits(traits) {}
+
+  // The symbolic analysis (ordering) of A + shift M from a matrix with the
+  // pattern of both A and M (A itself when they share it), so that it can
+  // run before the shift is known. The next factorization uses it if its
+  // matrix has that pattern (it checks), and analyzes again otherwise.
+  static constexpr bool analyzes_patterns = true;
+  void analyze_pattern(const Complex_sparse_matrix& pattern)
+  {
+    const Complex_sparse_matrix S = matrix_to_factor(pattern, pattern, 0.);
+    analyze_with_ordering_for_size(m_traits.solver(), S, 0);
+    m_pending_starts.assign(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
+    m_pending_rows.assign(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+    m_analyzed = true;
+  }
 
   void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
   {
