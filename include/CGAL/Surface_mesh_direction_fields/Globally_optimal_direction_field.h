@@ -411,7 +411,7 @@ private:
     typedef internal::Factored_matrix<SparseSolver> Factored;
     Component_factorization& kept = component_factorization(c, false);
     internal::Complex_sparse_matrix S;
-    if(c < m_shifted_lower.size() && m_shifted_lower[c].matrix.rows() != 0 && m_shifted_lower_shift == -lambda)
+    if(c < m_shifted_lower.size() && m_shifted_lower[c].matrix.rows() != 0 && m_shifted_lower[c].shift == -lambda)
       S.swap(m_shifted_lower[c].matrix);
     else
     {
@@ -713,7 +713,7 @@ private:
     return shifts;
   }
 
-  void update_matrices(int degree, double s, const std::vector<double>& shift_only = {})
+  void update_matrices(int degree, double s, const std::vector<double>& shifts = {})
   {
     if(!(m_has_matrices && degree == m_degree))
     {
@@ -730,11 +730,9 @@ private:
         m_matrices.resize(m_components.list.size());
       else
         m_matrices = internal::assemble_energy_and_mass(m_mesh, m_tangent_spaces, m_connection, m_components, s,
-                                                        shift_only, &m_shifted_lower);
+                                                        shifts, &m_shifted_lower);
       for(std::size_t c = 0; c < m_shifted_lower.size(); ++c)
         if(m_shifted_lower[c].matrix.rows() != 0) m_eigenvalue_scales[c] = m_shifted_lower[c].eigenvalue_scale;
-      for(double shift : shift_only)
-        if(!std::isnan(shift)) m_shifted_lower_shift = shift;
       for(auto& kept : m_factorizations)  // they factor the old matrices
         if(kept) kept->aligned_lambda = kept->indefinite_lambda = std::numeric_limits<double>::quiet_NaN();
       m_has_matrices = true;
@@ -856,7 +854,6 @@ private:
   std::vector<internal::Energy_and_mass> m_matrices;
   // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
   std::vector<internal::Shifted_lower_triangle> m_shifted_lower;
-  double m_shifted_lower_shift = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> m_eigenvalue_scales;                 // per component, NaN: not computed
   std::unique_ptr<internal::Mass_operator> m_mass_operator;  // products with M once it is freed, during a call
 

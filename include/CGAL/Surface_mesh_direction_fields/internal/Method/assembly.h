@@ -254,6 +254,7 @@ inline Energy_and_mass assemble_component(const Indexed_mesh& m, const Local_mat
 struct Shifted_lower_triangle
 {
   Complex_sparse_matrix matrix;
+  double shift = 0.;
   double eigenvalue_scale = 0.;  // trace(A) / trace(M)
 };
 
@@ -293,6 +294,7 @@ inline Shifted_lower_triangle assemble_shifted_lower_triangle(const Indexed_mesh
   });
   std::vector<double> energy_diagonal(nc), mass_diagonal(nc);
   Shifted_lower_triangle result;
+  result.shift = shift;
   Complex_sparse_matrix& S = result.matrix;
   S.resize(static_cast<Eigen::Index>(nc), static_cast<Eigen::Index>(nc));
   // Fills the columns whose size is right; returns false if one is not (a
