@@ -104,6 +104,19 @@ struct Indexed_mesh
   static std::size_t next_corner(std::size_t corner) { return 3 * (corner / 3) + (corner + 1) % 3; }
   static std::size_t previous_corner(std::size_t corner) { return 3 * (corner / 3) + (corner + 2) % 3; }
   std::size_t vertex_of_corner(std::size_t corner) const { return faces[corner / 3][corner % 3]; }
+
+  // visit(u) for each neighbour u of v, once each on a fan without a
+  // multiple edge: the vertex after v in each corner of its fan (the
+  // counter-clockwise fan repeats the vertex before v as the next corner's
+  // vertex after it), and at a border vertex also the last corner's vertex
+  // before v.
+  template <typename Visit>
+  void for_each_neighbour(std::size_t v, const Visit& visit) const
+  {
+    for(std::size_t corner : fan(v)) visit(vertex_of_corner(next_corner(corner)));
+    if(is_border_vertex[v] && fan_size(v) > 0)
+      visit(vertex_of_corner(previous_corner(fan_corners[fan_offsets[v + 1] - 1])));
+  }
 };
 
 // Starts loading data[v] for the three vertices v of face f (see prefetch.h).

@@ -259,25 +259,13 @@ struct Shifted_lower_triangle
 };
 
 // The number of rows jl or below in local column jl, assuming that the fan of
-// its vertex v repeats no neighbour: v itself, the vertex after v in each
-// corner (each neighbour once), and the last corner's vertex before v at a
-// border vertex (see gather_column()).
+// its vertex v repeats no neighbour: v itself and its neighbours below it.
 inline Complex_sparse_matrix::StorageIndex lower_column_size(const Indexed_mesh& m,
                                                              const std::vector<Compact_index>& local_index,
                                                              std::size_t v, std::size_t jl)
 {
   Complex_sparse_matrix::StorageIndex size = 1;
-  auto below = [&](std::size_t w) { return static_cast<std::size_t>(local_index[w]) > jl; };
-  for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
-  {
-    const std::size_t corner = m.fan_corners[k];
-    size += below(m.faces[corner / 3][(corner % 3 + 1) % 3]) ? 1 : 0;
-  }
-  if(m.is_border_vertex[v] && m.fan_size(v) > 0)
-  {
-    const std::size_t last = m.fan_corners[m.fan_offsets[v + 1] - 1];
-    size += below(m.faces[last / 3][(last % 3 + 2) % 3]) ? 1 : 0;
-  }
+  m.for_each_neighbour(v, [&](std::size_t w) { size += static_cast<std::size_t>(local_index[w]) > jl ? 1 : 0; });
   return size;
 }
 

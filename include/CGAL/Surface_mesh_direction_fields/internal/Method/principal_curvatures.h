@@ -99,22 +99,10 @@ inline void two_ring(const Indexed_mesh& m, std::size_t v, std::vector<std::size
   ring.clear();
   taken.clear();
   taken.insert(v);
-  // The neighbours of w: the vertex after w in each corner of its fan, and at
-  // a border vertex also the vertex before w in the last corner (the
-  // counter-clockwise fan repeats each other one as the next corner's vertex
-  // after w).
   auto add = [&](std::size_t u) {
     if(ring.size() + 1 < std::size_t(max_fit_points) && taken.insert(u)) ring.push_back(u);
   };
-  auto add_neighbours = [&](std::size_t w) {
-    for(std::size_t corner : m.fan(w))
-      add(m.faces[corner / 3][(corner % 3 + 1) % 3]);
-    if(m.is_border_vertex[w] && m.fan_size(w) > 0)
-    {
-      const std::size_t last = m.fan_corners[m.fan_offsets[w + 1] - 1];
-      add(m.faces[last / 3][(last % 3 + 2) % 3]);
-    }
-  };
+  auto add_neighbours = [&](std::size_t w) { m.for_each_neighbour(w, add); };
   add_neighbours(v);
   const std::size_t first_ring = ring.size();
   for(std::size_t i = 0; i < first_ring; ++i) add_neighbours(ring[i]);
