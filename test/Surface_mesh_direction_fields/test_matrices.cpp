@@ -655,13 +655,18 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   const SI::Complex_dense_matrix X = parallel_solve();
   if(large)
     report.check(factored.solve(B.leftCols(1)) == X, name + ": the factored matrix solves with the same plan");
-  const SI::Complex_dense_matrix X_cholmod = traits.solver().solve(B.leftCols(1));
+  // CHOLMOD alone (its own analysis, factorization and solve)
+  Llt reference;
+  reference.compute(S);
+  const SI::Complex_dense_matrix X_cholmod = reference.solve(B.leftCols(1));
   const SI::Complex_sparse_matrix S_full = S;  // both triangles were given
   report.check((X - X_cholmod).norm() <= 1e-13 * X_cholmod.norm() &&
                  (S_full * X - B.leftCols(1)).norm() <= 1e-13 * B.leftCols(1).norm(),
                name + ": the solution of CHOLMOD's solve, residual below 1e-13");
-  const SI::Complex_dense_matrix X2 = factored.solve(B);  // two columns: CHOLMOD's own solve
-  report.check((X2 - traits.solver().solve(B)).norm() == 0., name + ": two right-hand sides go to CHOLMOD's solve");
+  const SI::Complex_dense_matrix X2 = factored.solve(B);  // two columns: CHOLMOD's solve on the factor
+  const SI::Complex_dense_matrix X2_cholmod = reference.solve(B);
+  report.check(large ? (X2 - X2_cholmod).norm() <= 1e-13 * X2_cholmod.norm() : X2 == X2_cholmod,
+               name + ": two right-hand sides go to CHOLMOD's solve");
 #ifdef CGAL_LINKED_WITH_TBB
   SI::Complex_dense_matrix X_one_thread;
   {
@@ -677,10 +682,87 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
     S2.diagonal().array() += Complex(0.5, 0.);
     factored.factor(S2, true);
     const SI::Complex_dense_matrix X_again = factored.solve(B.leftCols(1));
+    reference.compute(S2);
     report.check((S2 * X_again - B.leftCols(1)).norm() <= 1e-13 * B.leftCols(1).norm() &&
-                   (X_again - traits.solver().solve(B.leftCols(1))).norm() <= 1e-13 * X_again.norm(),
+                   (X_again - reference.solve(B.leftCols(1))).norm() <= 1e-13 * X_again.norm(),
                  name + ": after a refactorization of the same pattern, the solution of the new matrix");
   }
+}
+
+// The package's numerical factorization on CHOLMOD's analysis
+// (supernodal_factorization.h): used exactly for large factors, equal to the
+// factor CHOLMOD computes on its own (CHOLMOD's ordering is deterministic, so
+// both have the same layout) up to rounding, the same bits on one thread as
+// on all, and a matrix that is not positive definite refused.
+static void check_parallel_factorization(Test_report& report, int g)
+{
+  typedef Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> Llt;
+  typedef CGAL::Eigen_solver_traits<Llt> Cholmod;
+  typedef SI::Cholmod_factor_access<Llt> Access;
+  const std::string name = "parallel supernodal factorization, grid " + std::to_string(g) + " x " + std::to_string(g);
+#ifdef __linux__
+  report.check(SI::dense_kernels().complete(), name + ": the BLAS and LAPACK kernels are found in the process");
+#endif
+  const SI::Complex_sparse_matrix S = grid_matrix(g);
+  Cholmod traits;
+  SI::Factored_matrix<Cholmod> factored(traits);
+  factored.factor(S);
+  const cholmod_factor* L = Access::factor(traits.solver());
+  const bool large = L->xsize >= SI::parallel_factorization_minimum_entries;
+  report.check(factored.factored_in_parallel() == (large && SI::dense_kernels().complete()),
+               name + ": the package factors exactly the factors of a million entries or more (" +
+                 std::to_string(L->xsize) + ")");
+  if(!factored.factored_in_parallel()) return;
+
+  Llt reference;
+  reference.compute(S);
+  const cholmod_factor* R = Access::factor(reference);
+  const Complex* Lx = static_cast<const Complex*>(L->x);
+  const Complex* Rx = static_cast<const Complex*>(R->x);
+  const bool same_layout = R->xsize == L->xsize && R->nsuper == L->nsuper &&
+                           std::equal(static_cast<const int*>(L->Perm), static_cast<const int*>(L->Perm) + L->n,
+                                      static_cast<const int*>(R->Perm));
+  double difference = 0., largest = 0.;
+  for(std::size_t k = 0; same_layout && k < L->xsize; ++k)
+  {
+    difference = (std::max)(difference, std::abs(Lx[k] - Rx[k]));
+    largest = (std::max)(largest, std::abs(Rx[k]));
+  }
+  report.check(same_layout && difference <= 1e-12 * largest,
+               name + ": CHOLMOD's factor, to 1e-12 relative");
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    Cholmod traits_one;
+    SI::Factored_matrix<Cholmod> factored_one(traits_one);
+    factored_one.factor(S);
+    const cholmod_factor* L1 = Access::factor(traits_one.solver());
+    report.check(factored_one.factored_in_parallel() && L1->xsize == L->xsize &&
+                   std::equal(Lx, Lx + L->xsize, static_cast<const Complex*>(L1->x)),
+                 name + ": the same bits on one thread as on all");
+  }
+#endif
+  // the grid's connection Laplacian has eigenvalues in [0, 8]: S - 5 I is indefinite
+  SI::Complex_sparse_matrix indefinite = S;
+  indefinite.diagonal().array() -= Complex(5., 0.);
+  bool threw = false;
+  try
+  {
+    factored.factor(indefinite, true);
+  }
+  catch(const CGAL::Surface_mesh_direction_fields::Solver_failure_error&)
+  {
+    threw = true;
+  }
+  report.check(threw && !factored.factor_if_positive_definite(indefinite, true),
+               name + ": a matrix that is not positive definite is refused (factor() throws, the trial says so)");
+  factored.factor(S);
+  const SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 3);
+  const SI::Complex_dense_matrix X = factored.solve(B), x = factored.solve(B.leftCols(1));
+  const SI::Complex_sparse_matrix S_full = S;
+  report.check(factored.factored_in_parallel() && (S_full * X - B).norm() <= 1e-13 * B.norm() &&
+                 (S_full * x - B.leftCols(1)).norm() <= 1e-13 * B.leftCols(1).norm(),
+               name + ": factored again after the refusal, blocks and single right-hand sides solved (residual below 1e-13)");
 }
 #endif
 
@@ -815,6 +897,8 @@ int main()
       report.check(!SI::Supernodal_solve_plan(view).valid(), "parallel supernodal solve: a tree not in postorder is refused");
     }
     check_parallel_supernodal_solve(report, 200);
+    check_parallel_factorization(report, 3);
+    check_parallel_factorization(report, 200);
 #endif
   }
 

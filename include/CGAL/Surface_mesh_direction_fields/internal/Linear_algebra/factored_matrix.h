@@ -26,6 +26,7 @@
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_factorization.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #endif
 
@@ -288,6 +289,11 @@ struct Cholmod_factor_access : EigenSolver
   {
     return solver.*(&Cholmod_factor_access::m_cholmodFactor);
   }
+  // for the package's own numerical factorization (which writes the values
+  // of the factor CHOLMOD's analysis allocated)
+  static cholmod_factor* factor(EigenSolver& solver) { return solver.*(&Cholmod_factor_access::m_cholmodFactor); }
+  // the shift beta the wrapper would add (A + beta I); zero unless set
+  static double shift(const EigenSolver& solver) { return (solver.*(&Cholmod_factor_access::m_shiftOffset))[0]; }
 };
 
 // The arrays of a supernodal complex factor with int indices.
@@ -310,41 +316,115 @@ std::true_type is_cholmod_solver(const Eigen::CholmodBase<Matrix, UpLo, Derived>
 #endif
 std::false_type is_cholmod_solver(...);
 
-// The parallel solve with CHOLMOD's factor, when the solver is one of
-// Eigen's CHOLMOD solvers and its factor is supernodal, complex, LL^*, with
-// int indices (what CholmodSupernodalLLT computes), and large enough: below
-// about a million stored entries CHOLMOD's solve is as fast or faster
-// (measured on the shared meshes, see the benchmark's README). Empty otherwise.
+// The package's parallel numerical factorization (supernodal_factorization.h)
+// and solve (supernodal_solve.h) on CHOLMOD's supernodal analysis, when the
+// solver is Eigen's CholmodSupernodalLLT of the lower triangle (without the
+// wrapper's shift) and the factor is large enough: below about a million
+// stored entries CHOLMOD's own factorization and solve are as fast or
+// faster (measured on the shared meshes, see the benchmark's README). The
+// factorization also needs the BLAS and LAPACK kernels (dense_kernels.h);
+// without them CHOLMOD factors, and the solve alone is the package's.
+//
+// The values are written into the factor held by Eigen's wrapper, whose own
+// state then still says "not factored": solves go through CHOLMOD's
+// cholmod_solve directly (or the parallel solve), never through the wrapper.
 constexpr std::size_t parallel_solve_minimum_entries = std::size_t(1) << 20;
+constexpr std::size_t parallel_factorization_minimum_entries = std::size_t(1) << 20;
 
-class Parallel_supernodal_solve
+class Parallel_supernodal_cholmod
 {
 #ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
   Supernodal_factor_view<int> m_view;
-  std::unique_ptr<Supernodal_solve_plan> m_plan;  // kept while the analysis is
-  bool m_ready = false;                           // the factor is there, the plan fits it
+  std::unique_ptr<Supernodal_solve_plan> m_plan;           // kept while the analysis is
+  std::unique_ptr<Supernodal_updates<int> > m_updates;
+  cholmod_factor* m_factored = nullptr;  // the factor this class factored, until the next factorization
+  cholmod_common* m_common = nullptr;
+  bool m_ready = false;                  // the factor is there, the plan fits it
+
+  static bool has_usable_layout(const cholmod_factor* L, bool numeric)
+  {
+    return L != nullptr && L->is_super && L->itype == CHOLMOD_INT && L->dtype == CHOLMOD_DOUBLE &&
+           L->super != nullptr && L->pi != nullptr && L->px != nullptr && L->s != nullptr &&
+           (numeric ? L->is_ll && L->xtype == CHOLMOD_COMPLEX && L->x != nullptr
+                    : L->xtype == CHOLMOD_COMPLEX || L->xtype == CHOLMOD_PATTERN);
+  }
+
+  // the view and the plan of L's structure (kept if it is the analysis of last time)
+  void read_structure(const cholmod_factor& L, bool new_structure)
+  {
+    m_view = supernodal_view(L);
+    if(new_structure || !m_plan)
+    {
+      m_plan = std::make_unique<Supernodal_solve_plan>(m_view);
+      m_updates.reset();
+    }
+  }
+
+  template <typename EigenSolver>
+  static constexpr bool is_lower_supernodal_llt()
+  {
+    return std::is_same<EigenSolver, Eigen::CholmodSupernodalLLT<Complex_sparse_matrix, Eigen::Lower> >::value;
+  }
 
 public:
-  // after each factorization; `new_structure`: the analysis was redone
+  enum Outcome { not_attempted, factored, not_positive_definite };
+
+  // Factors S (the lower triangle) into the solver's analyzed factor, or
+  // returns not_attempted (the caller has CHOLMOD factor it).
+  template <typename EigenSolver>
+  Outcome factor(EigenSolver& solver, const Complex_sparse_matrix& S, bool new_structure)
+  {
+    m_ready = false;
+    m_factored = nullptr;
+    if constexpr(is_lower_supernodal_llt<EigenSolver>())
+    {
+      cholmod_factor* L = Cholmod_factor_access<EigenSolver>::factor(solver);
+      if(!has_usable_layout(L, false) || L->xsize < parallel_factorization_minimum_entries ||
+         Cholmod_factor_access<EigenSolver>::shift(solver) != 0. || !dense_kernels().complete())
+        return not_attempted;
+      read_structure(*L, new_structure);
+      if(!m_plan->valid()) return not_attempted;
+      cholmod_common& common = solver.cholmod();
+      if(L->xtype == CHOLMOD_PATTERN && !cholmod_change_factor(CHOLMOD_COMPLEX, true, true, true, true, L, &common))
+        return not_attempted;
+      m_view = supernodal_view(*L);  // now with values
+      if(!m_updates) m_updates = std::make_unique<Supernodal_updates<int> >(m_view);
+      const Complex_sparse_matrix lower = permuted_lower_triangle(S, m_view.permutation);
+      const std::ptrdiff_t column =
+        supernodal_factorize(m_view, static_cast<Complex*>(L->x), lower, *m_updates, *m_plan);
+      L->is_ll = true;
+      L->minor = column < 0 ? L->n : static_cast<std::size_t>(column);
+      if(column >= 0) return not_positive_definite;
+      m_factored = L;
+      m_common = &common;
+      m_ready = true;
+      return factored;
+    }
+    else
+    {
+      CGAL_USE(solver);
+      CGAL_USE(S);
+      CGAL_USE(new_structure);
+      return not_attempted;
+    }
+  }
+
+  // after a factorization by CHOLMOD; `new_structure`: the analysis was redone
   template <typename EigenSolver>
   void update(const EigenSolver& solver, bool new_structure)
   {
+    m_ready = false;
+    m_factored = nullptr;
     if constexpr(decltype(is_cholmod_solver(&solver))::value)
     {
       const cholmod_factor* L = Cholmod_factor_access<EigenSolver>::factor(solver);
-      const bool usable = L != nullptr && L->is_super && L->is_ll && L->xtype == CHOLMOD_COMPLEX &&
-                          L->dtype == CHOLMOD_DOUBLE && L->itype == CHOLMOD_INT && L->super != nullptr &&
-                          L->pi != nullptr && L->px != nullptr && L->s != nullptr && L->x != nullptr &&
-                          L->xsize >= parallel_solve_minimum_entries;
-      m_ready = false;
-      if(!usable)
+      if(!has_usable_layout(L, true) || L->xsize < parallel_solve_minimum_entries)
       {
         m_plan.reset();
+        m_updates.reset();
         return;
       }
-      m_view = supernodal_view(*L);
-      if(new_structure || !m_plan)
-        m_plan = std::make_unique<Supernodal_solve_plan>(m_view);
+      read_structure(*L, new_structure);
       m_ready = m_plan->valid();
     }
     else
@@ -353,19 +433,41 @@ public:
       CGAL_USE(new_structure);
     }
   }
-  void reset() { m_ready = false; }  // before a factorization
+  void reset()  // before a factorization
+  {
+    m_ready = false;
+    m_factored = nullptr;
+  }
   bool available() const { return m_ready; }
+  // whether the last factorization was this class's (solves of blocks then
+  // go to cholmod_solve here, the wrapper believing itself unfactored)
+  bool factored_here() const { return m_factored != nullptr; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
     return supernodal_solve(m_view, *m_plan, B.col(0));
   }
+  Complex_dense_matrix solve_block(const Complex_dense_matrix& B) const
+  {
+    Complex_dense_matrix rhs = B;
+    cholmod_dense b = Eigen::viewAsCholmod(rhs);
+    cholmod_dense* x = cholmod_solve(CHOLMOD_A, m_factored, &b, m_common);
+    if(x == nullptr) throw Solver_failure_error("the sparse solver failed to solve with its factorization");
+    Complex_dense_matrix X = Eigen::Map<const Complex_dense_matrix>(static_cast<const Complex*>(x->x), B.rows(), B.cols());
+    cholmod_free_dense(&x, m_common);
+    return X;
+  }
 #else
 public:
+  enum Outcome { not_attempted, factored, not_positive_definite };
+  template <typename EigenSolver>
+  Outcome factor(EigenSolver&, const Complex_sparse_matrix&, bool) { return not_attempted; }
   template <typename EigenSolver>
   void update(const EigenSolver&, bool) {}
   void reset() {}
   bool available() const { return false; }
+  bool factored_here() const { return false; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const { return B; }
+  Complex_dense_matrix solve_block(const Complex_dense_matrix& B) const { return B; }
 #endif
 };
 
@@ -380,7 +482,7 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
   Traits& m_traits;
   bool m_analyzed = false;
 
-  Parallel_supernodal_solve m_parallel_solve;
+  Parallel_supernodal_cholmod m_parallel;
   bool m_new_structure = false;
   // the compressed pattern (column starts, rows) of the matrix to factor
   // that analyze_pattern() analyzed, until a factorization checks it
@@ -411,6 +513,35 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
            static_cast<std::size_t>(S.nonZeros()) == m_pending_rows.size() &&
            std::equal(m_pending_starts.begin(), m_pending_starts.end(), S.outerIndexPtr()) &&
            std::equal(m_pending_rows.begin(), m_pending_rows.end(), S.innerIndexPtr());
+  }
+
+  // The package's parallel factorization where it applies, the solver's
+  // otherwise. Returns whether S was factored; a `trial` also requires
+  // positive pivots of an LDL^* factorization, and silences CHOLMOD's
+  // message for a matrix that is not positive definite.
+  bool factor_numerically(const Complex_sparse_matrix& S, bool same_pattern, bool trial)
+  {
+    EigenSolver& solver = m_traits.solver();
+    analyze(S, same_pattern);
+    m_parallel.reset();
+    const auto outcome = m_parallel.factor(solver, S, m_new_structure);
+    if(outcome != Parallel_supernodal_cholmod::not_attempted) return outcome == Parallel_supernodal_cholmod::factored;
+    if(trial)
+    {
+      Cholmod_messages_off<EigenSolver> messages_off(solver);
+      solver.factorize(S);
+    }
+    else
+      solver.factorize(S);
+    const bool factored = solver.info() == Eigen::Success && (!trial || has_positive_pivots(solver, 0));
+    if(factored) m_parallel.update(solver, m_new_structure);
+    return factored;
+  }
+
+  static Complex_dense_matrix finite_solution(Complex_dense_matrix X)
+  {
+    if(!X.allFinite()) throw Solver_failure_error("the sparse solver failed to solve with its factorization");
+    return X;
   }
 
 public:
@@ -445,12 +576,8 @@ public:
 
   void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
   {
-    analyze(S, same_pattern);
-    m_parallel_solve.reset();
-    m_traits.solver().factorize(S);
-    if(m_traits.solver().info() != Eigen::Success)
+    if(!factor_numerically(S, same_pattern, false))
       throw Solver_failure_error("the sparse solver could not factor the matrix (not positive definite?)");
-    m_parallel_solve.update(m_traits.solver(), m_new_structure);
   }
 
   // Factors S and returns true, or returns false, without a warning, if the
@@ -458,31 +585,21 @@ public:
   // the next factorization then redoes the analysis.
   bool factor_if_positive_definite(const Complex_sparse_matrix& S, bool same_pattern = false)
   {
-    EigenSolver& solver = m_traits.solver();
-    analyze(S, same_pattern);
-    m_parallel_solve.reset();
-    {
-      Cholmod_messages_off<EigenSolver> quiet(solver);
-      solver.factorize(S);
-    }
-    m_analyzed = solver.info() == Eigen::Success && has_positive_pivots(solver, 0);
-    if(m_analyzed) m_parallel_solve.update(solver, m_new_structure);
+    m_analyzed = factor_numerically(S, same_pattern, true);
     return m_analyzed;
   }
 
-
   // Whether a single right-hand side is solved by the parallel solve.
-  bool solves_in_parallel() const { return m_parallel_solve.available(); }
+  bool solves_in_parallel() const { return m_parallel.available(); }
+  // Whether the last factorization was the package's parallel one.
+  bool factored_in_parallel() const { return m_parallel.factored_here(); }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
-    if(B.cols() == 1 && m_parallel_solve.available())
-    {
-      Complex_dense_matrix X = m_parallel_solve.solve(B);
-      if(!X.allFinite())
-        throw Solver_failure_error("the sparse solver failed to solve with its factorization");
-      return X;
-    }
+    if(B.cols() == 1 && m_parallel.available())
+      return finite_solution(m_parallel.solve(B));
+    if(m_parallel.factored_here())
+      return finite_solution(m_parallel.solve_block(B));
     Complex_dense_matrix X = m_traits.solver().solve(B);
     if(m_traits.solver().info() != Eigen::Success || !X.allFinite())
       throw Solver_failure_error("the sparse solver failed to solve with its factorization");
