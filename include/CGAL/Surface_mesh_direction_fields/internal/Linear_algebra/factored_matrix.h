@@ -319,17 +319,19 @@ std::false_type is_cholmod_solver(...);
 // The package's parallel numerical factorization (supernodal_factorization.h)
 // and solve (supernodal_solve.h) on CHOLMOD's supernodal analysis, when the
 // solver is Eigen's CholmodSupernodalLLT of the lower triangle (without the
-// wrapper's shift) and the factor is large enough: below about a million
-// stored entries CHOLMOD's own factorization and solve are as fast or
-// faster (measured on the shared meshes, see the benchmark's README). The
-// factorization also needs the BLAS and LAPACK kernels (dense_kernels.h);
-// without them CHOLMOD factors, and the solve alone is the package's.
+// wrapper's shift). The factorization needs the BLAS and LAPACK kernels
+// (dense_kernels.h; without them CHOLMOD factors) and is used from factors
+// of 16,384 entries on: on the shared meshes it was faster than CHOLMOD's
+// from there (CHOLMOD's calls of a multithreaded BLAS on small supernodes
+// cost more than they gain). The solve of one right-hand side is used from a
+// million entries on: below, CHOLMOD's solve is as fast or faster. The
+// times are in the benchmark's README.
 //
 // The values are written into the factor held by Eigen's wrapper, whose own
 // state then still says "not factored": solves go through CHOLMOD's
 // cholmod_solve directly (or the parallel solve), never through the wrapper.
 constexpr std::size_t parallel_solve_minimum_entries = std::size_t(1) << 20;
-constexpr std::size_t parallel_factorization_minimum_entries = std::size_t(1) << 20;
+constexpr std::size_t parallel_factorization_minimum_entries = std::size_t(1) << 14;
 
 class Parallel_supernodal_cholmod
 {
