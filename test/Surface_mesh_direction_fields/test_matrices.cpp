@@ -713,6 +713,8 @@ static void check_parallel_factorization(Test_report& report, int g)
                name + ": the package factors exactly the factors of 16,384 entries or more (" +
                  std::to_string(L->xsize) + ")");
   if(!factored.factored_in_parallel()) return;
+  report.check(factored.solves_in_parallel() == (L->xsize >= SI::parallel_solve_minimum_entries),
+               name + ": one right-hand side is solved in parallel exactly from a million entries on");
 
   Llt reference;
   reference.compute(S);

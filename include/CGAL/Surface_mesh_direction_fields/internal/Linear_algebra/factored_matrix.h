@@ -399,7 +399,7 @@ public:
       if(column >= 0) return not_positive_definite;
       m_factored = L;
       m_common = &common;
-      m_ready = true;
+      m_ready = L->xsize >= parallel_solve_minimum_entries;
       return factored;
     }
     else
