@@ -77,9 +77,7 @@ public:
   explicit Supernodal_updates(const Supernodal_factor_view<Index>& L)
   {
     const std::size_t ns = L.supernodes;
-    std::vector<std::size_t> supernode_of_column(L.n);
-    for(std::size_t s = 0; s < ns; ++s)
-      for(Index j = L.super[s]; j < L.super[s + 1]; ++j) supernode_of_column[static_cast<std::size_t>(j)] = s;
+    const std::vector<std::size_t> supernode_of_column = supernode_of_each_column(L);
     m_start.assign(ns + 1, 0);
     for_each_update(L, supernode_of_column, [this](std::size_t t, std::size_t, Index) { ++m_start[t + 1]; });
     std::partial_sum(m_start.begin(), m_start.end(), m_start.begin());

@@ -68,6 +68,17 @@ struct Supernodal_factor_view
   const Index* permutation = nullptr;  // row k of P A P^T is row permutation[k] of A (null: identity)
 };
 
+// The supernode that holds each column of the factor.
+template <typename Index>
+std::vector<std::size_t> supernode_of_each_column(const Supernodal_factor_view<Index>& L)
+{
+  std::vector<std::size_t> supernode_of_column(L.n);
+  for(std::size_t s = 0; s < L.supernodes; ++s)
+    for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
+      supernode_of_column[j] = s;
+  return supernode_of_column;
+}
+
 // The cut of the tree, computed once per symbolic structure: subtrees of at
 // most 1 / `task_budget` of the factor's entries each, the rest is the top.
 // The budget is fixed, not taken from the number of threads, because the cut
@@ -113,10 +124,7 @@ private:
   static Tree read_tree(const Supernodal_factor_view<Index>& L)
   {
     const std::size_t ns = L.supernodes;
-    std::vector<std::size_t> supernode_of_column(L.n);
-    for(std::size_t s = 0; s < ns; ++s)
-      for(std::size_t j = static_cast<std::size_t>(L.super[s]); j < static_cast<std::size_t>(L.super[s + 1]); ++j)
-        supernode_of_column[j] = s;
+    const std::vector<std::size_t> supernode_of_column = supernode_of_each_column(L);
     Tree tree;
     tree.parent.assign(ns, none);
     tree.first_descendant.resize(ns);
