@@ -470,6 +470,44 @@ struct Cholmod_message_counter
 };
 #endif
 
+// The shifted solve again with a double-precision factor, and with a shift
+// just below lambda_1, where a single-precision solve has no correct digit.
+template <typename Solver, typename Same_eigenpair>
+void check_single_precision_eigen_solve(Test_report& report, const std::string& name, const SI::Complex_sparse_matrix& A,
+                                        const SI::Complex_sparse_matrix& M, SI::Eigen_solve_options options,
+                                        const SI::Eigen_solve_result& shifted, const Same_eigenpair& same_eigenpair)
+{
+  options.single_precision = false;
+  Solver solver;
+  SI::Factored_matrix<Solver> factored(solver);
+  const SI::Eigen_solve_result in_double = SI::smallest_eigenpair(A, M, factored, options);
+  report.check(!in_double.single_precision && same_eigenpair(in_double) &&
+                 in_double.iterations + 1 >= shifted.iterations && shifted.iterations + 1 >= in_double.iterations,
+               name + ": a double-precision factor gives the same eigenpair in as many solves (+-1: " +
+                 std::to_string(in_double.iterations) + " and " + std::to_string(shifted.iterations) + ", " +
+                 (shifted.single_precision ? "single" : "double") + " precision)");
+  if(!shifted.single_precision) return;
+  options.single_precision = true;
+  options.shift_fraction = in_double.eigenvalue * (1. - 1e-9) / shifted.coarse_upper_bound;
+  Solver close_solver;
+  SI::Factored_matrix<Solver> close_factored(close_solver);
+  const SI::Eigen_solve_result close = SI::smallest_eigenpair(A, M, close_factored, options);
+  std::cout << name << ": shift at (1 - 1e-9) lambda_1: single " << close.single_precision << ", refactored "
+            << close.refactored_in_double << ", solves " << close.iterations << "\n";
+  report.check(same_eigenpair(close), name + ": a shift at (1 - 1e-9) lambda_1 still gives the eigenpair");
+
+  // a stall declared after every solve that does not gain a factor 10: the
+  // factor is replaced by a double-precision one, and the iteration goes on
+  options.shift_fraction = shifted.shift / -shifted.coarse_upper_bound;
+  options.stall_window = 1;
+  Solver stalled_solver;
+  SI::Factored_matrix<Solver> stalled_factored(stalled_solver);
+  const SI::Eigen_solve_result stalled = SI::smallest_eigenpair(A, M, stalled_factored, options);
+  report.check(stalled.single_precision && stalled.refactored_in_double && !stalled_factored.holds_single_precision() &&
+                 stalled.shift == shifted.shift && same_eigenpair(stalled),
+               name + ": after a stall, the same shifted matrix is factored in double precision and the eigenpair found");
+}
+
 // The coarse estimate and the shifted factorization of the eigen-solve, with
 // the solver type `Solver`, on a mesh with a simple lambda_1.
 template <typename Solver>
@@ -536,6 +574,7 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
                name + ": A - 0.6 (1 - |s|) R M is factored");
   report.check(same_eigenpair(shifted), name + ": the shifted solve gives the eigenpair of the plain one");
   report.check(shifted.iterations < reference.iterations, name + ": and needs fewer solves");
+  check_single_precision_eigen_solve<Solver>(report, name, A, M, options, shifted, same_eigenpair);
 
   // a shift above lambda_1: detected, and A + epsilon M factored instead
   options.shift_fraction = 4.;
@@ -701,7 +740,7 @@ static void check_parallel_factorization(Test_report& report, int g)
   typedef SI::Cholmod_factor_access<Llt> Access;
   const std::string name = "parallel supernodal factorization, grid " + std::to_string(g) + " x " + std::to_string(g);
 #ifdef __linux__
-  report.check(SI::dense_kernels().complete(), name + ": the BLAS and LAPACK kernels are found in the process");
+  report.check(SI::dense_kernels<double>().complete(), name + ": the BLAS and LAPACK kernels are found in the process");
 #endif
   const SI::Complex_sparse_matrix S = grid_matrix(g);
   Cholmod traits;
@@ -709,7 +748,7 @@ static void check_parallel_factorization(Test_report& report, int g)
   factored.factor(S);
   const cholmod_factor* L = Access::factor(traits.solver());
   const bool large = L->xsize >= SI::parallel_factorization_minimum_entries;
-  report.check(factored.factored_in_parallel() == (large && SI::dense_kernels().complete()),
+  report.check(factored.factored_in_parallel() == (large && SI::dense_kernels<double>().complete()),
                name + ": the package factors exactly the factors of 16,384 entries or more (" +
                  std::to_string(L->xsize) + ")");
   if(!factored.factored_in_parallel()) return;
@@ -765,6 +804,55 @@ static void check_parallel_factorization(Test_report& report, int g)
   report.check(factored.factored_in_parallel() && (S_full * X - B).norm() <= 1e-13 * B.norm() &&
                  (S_full * x - B.leftCols(1)).norm() <= 1e-13 * B.leftCols(1).norm(),
                name + ": factored again after the refusal, blocks and single right-hand sides solved (residual below 1e-13)");
+}
+
+// The factorization in single precision (allow_single_precision(true)), on
+// a grid large enough for the package's own factorization.
+static void check_single_precision_factorization(Test_report& report, int g)
+{
+  typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Cholmod;
+  const std::string name = "single-precision factorization, grid " + std::to_string(g) + " x " + std::to_string(g);
+#ifdef __linux__
+  report.check(SI::dense_kernels<float>().complete(), name + ": the single-precision kernels are found in the process");
+#endif
+  if(!SI::dense_kernels<float>().complete()) return;
+  const SI::Complex_sparse_matrix S = grid_matrix(g), S_full = S;
+  auto factor_single = [&S](SI::Factored_matrix<Cholmod>& f) {
+    f.allow_single_precision(true);
+    f.factor(S);
+  };
+  Cholmod traits;
+  SI::Factored_matrix<Cholmod> factored(traits);
+  factor_single(factored);
+  report.check(factored.holds_single_precision() && factored.solves_in_parallel(),
+               name + ": allowed, the factor is in single precision, solved by the package");
+  const SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 3);
+  const SI::Complex_dense_matrix x = factored.solve(B.leftCols(1)), X = factored.solve(B);
+  const double residual = (S_full * x - B.leftCols(1)).norm() / B.leftCols(1).norm();
+  report.check(residual <= 1e-5 && residual >= 1e-10,
+               name + ": a solve has single precision's accuracy (relative residual " + std::to_string(residual) + ")");
+  report.check(X.col(0) == x, name + ": a block is solved column by column");
+  const double tiny = std::ldexp(1., -1000);
+  const SI::Complex_dense_matrix x_tiny = factored.solve(SI::Complex_dense_matrix(B.leftCols(1) * tiny));
+  report.check(x_tiny == SI::Complex_dense_matrix(x * tiny),
+               name + ": a right-hand side far below float's range is scaled exactly (2^-1000 b)");
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    Cholmod traits_one;
+    SI::Factored_matrix<Cholmod> factored_one(traits_one);
+    factor_single(factored_one);
+    report.check(factored_one.solve(B.leftCols(1)) == x, name + ": the same bits on one thread as on all");
+  }
+#endif
+  SI::Complex_sparse_matrix indefinite = S;
+  indefinite.diagonal().array() -= Complex(5., 0.);
+  report.check(!factored.factor_if_positive_definite(indefinite, true) && !factored.holds_single_precision(),
+               name + ": a matrix that is not positive definite is refused");
+  factored.allow_single_precision(false);
+  factored.factor(S);
+  report.check(!factored.holds_single_precision() && (S_full * factored.solve(B) - B).norm() <= 1e-13 * B.norm(),
+               name + ": not allowed, the factor is in double precision again (residual below 1e-13)");
 }
 #endif
 
@@ -902,6 +990,7 @@ int main()
     check_parallel_factorization(report, 3);
     check_parallel_factorization(report, 40);
     check_parallel_factorization(report, 200);
+    check_single_precision_factorization(report, 200);
 #endif
   }
 

@@ -96,6 +96,14 @@ struct Eigen_solve_options
   double coarse_tolerance = 1e-4;
   int smoothing_sweeps = 4;
   double shift_fraction = shift_fraction_for(0.);
+  // whether A - sigma M may be factored in single precision (see
+  // factor_below_smallest_eigenvalue()), and the solves after which a
+  // single-precision factor is replaced if the best residual has not fallen
+  // tenfold over them (see iterate_with_rayleigh_ritz()). No shared mesh
+  // comes near: with single precision, each needs the solves it needs in
+  // double precision (the benchmark's README).
+  bool single_precision = true;
+  std::size_t stall_window = 8;
 };
 
 struct Eigen_solve_result
@@ -113,6 +121,10 @@ struct Eigen_solve_result
   std::size_t coarse_iterations = 0;
   double shift = 0.;
   bool shift_rejected = false;
+  // whether A + shift M was factored in single precision, and whether the
+  // iteration then stalled and factored it again in double precision
+  bool single_precision = false;
+  bool refactored_in_double = false;
 };
 
 // Deterministic complex start vector: the raw 64-bit Mersenne twister output is
@@ -336,17 +348,29 @@ inline Complex_dense_matrix random_block(Eigen::Index n, Eigen::Index cols, unsi
 // (R >= lambda_1, so it is unless R overestimates lambda_1 by 1 /
 // shift_fraction or more), else shift = +epsilon (A + epsilon M). Not worth
 // trying where lambda_1 is about 0. Records the shift in `result`.
+//
+// A + shift M may be factored in single precision (`single_allowed`, where
+// the solver has such a factorization): the iteration applies the solve to
+// residuals, so an inexact solve costs it no accuracy (see
+// iterate_with_rayleigh_ritz()), and its convergence factor is about the
+// solve's relative error, 1e-6 to 1e-3 for A - sigma M on the shared meshes.
+// A + epsilon M is nearly singular when lambda_1 is about 0, and a
+// single-precision solve with it has no correct digit: it is always factored
+// in double precision.
 template <typename SparseSolver>
 void factor_below_smallest_eigenvalue(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
                                       double eigenvalue_scale, double bound, const Eigen_solve_options& options,
-                                      Factored_matrix<SparseSolver>& factored, Eigen_solve_result& result)
+                                      bool single_allowed, Factored_matrix<SparseSolver>& factored,
+                                      Eigen_solve_result& result)
 {
   result.shift = options.relative_shift * eigenvalue_scale;
   bool factored_shifted = false;
   if(Factored_matrix<SparseSolver>::detects_indefinite && options.shift_fraction * bound > result.shift)
   {
     const double trial = -options.shift_fraction * bound;
+    factored.allow_single_precision(single_allowed);
     factored_shifted = factored.factor_shifted_if_positive_definite(A, M, trial, options.same_pattern);
+    factored.allow_single_precision(false);
     if(factored_shifted)
       result.shift = trial;
     else
@@ -356,16 +380,44 @@ void factor_below_smallest_eigenvalue(const Complex_sparse_matrix& A, const Comp
     factored.factor_shifted(A, M, result.shift, options.same_pattern);
 }
 
+// The Ritz vectors X of a step with A X and M X: their residuals
+// A x_j - theta_j M x_j (theta_j: the Rayleigh quotient of x_j); the first
+// one's eigenvalue and relative residual go to `result`.
+inline Complex_dense_matrix ritz_residuals(const Hermitian_pencil& pencil, const Complex_dense_matrix& X,
+                                           Complex_dense_matrix& AX, Complex_dense_matrix& MX,
+                                           Eigen_solve_result& result)
+{
+  hermitian_multiply_pair(pencil.A, pencil.M, pencil.same_pattern, X, AX, MX);
+  Complex_dense_matrix R(X.rows(), X.cols());
+  for(Eigen::Index j = 0; j < X.cols(); ++j)
+  {
+    const double norm2 = (std::max)(0., X.col(j).dot(MX.col(j)).real());
+    const double theta = norm2 > 0. ? X.col(j).dot(AX.col(j)).real() / norm2 : 0.;
+    R.col(j) = AX.col(j) - theta * MX.col(j);
+    if(j == 0)
+    {
+      result.eigenvalue = theta;
+      result.residual = R.col(0).norm() / (pencil.scale * MX.col(0).norm());
+    }
+  }
+  return R;
+}
+
 // The iteration of smallest_eigenpair() on its factorization, from `start`:
-// see there. Returns the best Ritz vector u and M u.
-template <typename SparseSolver>
+// see there. Returns the best Ritz vector u and M u. `refactor_exactly()`
+// replaces a single-precision factor by a double-precision one when the
+// iteration stalls with it: when its best residual has not fallen tenfold
+// over the last `options.stall_window` solves (a single step is no test:
+// the residual of the best Ritz pair often grows for a step on the way).
+// The iteration then goes on with the same basis.
+
+template <typename SparseSolver, typename Refactor>
 void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_matrix<SparseSolver>& factored,
                                 const Eigen_solve_options& options, const Complex_dense_matrix& start,
-                                Eigen_solve_result& result, Complex_vector& u, Complex_vector& Mu)
+                                const Refactor& refactor_exactly, Eigen_solve_result& result, Complex_vector& u,
+                                Complex_vector& Mu)
 {
-  const Complex_sparse_matrix& A = pencil.A;
-  const Complex_sparse_matrix& M = pencil.M;
-  const Eigen::Index n = A.rows();
+  const Eigen::Index n = pencil.A.rows();
   const Eigen::Index block = start.cols();
   const Eigen::Index basis_size =
     (std::max)((std::max)(Eigen::Index(3), options.restart_size + 2) * block, (std::min)(options.basis_size, n));
@@ -375,18 +427,13 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   Complex_dense_matrix next = basis.vectors();  // the block the next solve is applied to
   Complex_dense_matrix previous(n, 0);          // the best Ritz vectors of the previous step
   Complex_dense_matrix kept(n, 0);              // the best Ritz vectors a restart keeps
-  Complex_dense_matrix MX = hermitian_multiply(M, next), AU;
+  Complex_dense_matrix AX, MX;
+  Complex_dense_matrix R = ritz_residuals(pencil, next, AX, MX, result);
   u = next.col(0);
-  if(options.max_iterations == 0)  // no step: the start vector's own Rayleigh quotient and residual
-  {
-    hermitian_multiply(A, u, AU);
-    const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
-    result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
-    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (pencil.scale * MX.col(0).norm());
-  }
+  std::vector<double> best_residual(1, result.residual);  // after each solve
   while(result.iterations < options.max_iterations)
   {
-    const Complex_dense_matrix W = factored.solve(MX);
+    const Complex_dense_matrix W = factored.solve(R);
     ++result.iterations;
     if(basis.size() + W.cols() > basis_size)
     {
@@ -419,21 +466,18 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
     else
       combine_columns(basis.vectors(), ritz.eigenvectors().leftCols(best), next);
     u = next.col(0);
-    if(block == 1)
-      hermitian_multiply_pair(A, M, pencil.same_pattern, next, AU, MX);  // next = u
-    else
-    {
-      hermitian_multiply(M, next, MX);
-      hermitian_multiply(A, u, AU);
-    }
-    const double norm_u2 = (std::max)(0., u.dot(MX.col(0)).real());
-    result.eigenvalue = u.dot(AU.col(0)).real() / norm_u2;
-    result.residual = (AU.col(0) - result.eigenvalue * MX.col(0)).norm() / (pencil.scale * MX.col(0).norm());
+    R = ritz_residuals(pencil, next, AX, MX, result);
     if(result.residual <= options.residual_tolerance)
     {
       result.converged = true;
       break;
     }
+    best_residual.push_back((std::min)(best_residual.back(), result.residual));
+    const std::size_t k_now = best_residual.size() - 1;
+    const std::size_t window = (std::max)(std::size_t(1), options.stall_window);
+    if(factored.holds_single_precision() && k_now >= window &&
+       !(best_residual[k_now] <= 0.1 * best_residual[k_now - window]))
+      refactor_exactly();
   }
   Mu = MX.col(0);  // MX = M u (u is next's first column)
 }
@@ -450,7 +494,13 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
 // diag(M), which needs no sparse product and keeps V^* M V well conditioned)
 // and the best vector of span(V) is the smallest eigenpair of the small
 // pencil (V^* A V, V^* M V). Each step applies the solve to the current best
-// Ritz vectors, so the basis holds the iterates of a Krylov-like sequence; on
+// Ritz vectors x_j, or rather to their residuals A x_j - theta_j M x_j: with
+// x_j, (A - sigma M)^{-1} of the residual spans the same space as
+// (A - sigma M)^{-1} M x_j, but its part that improves x_j is no longer the
+// small difference of two large vectors, so a solve with a relative error
+// (a single-precision factor) still improves x_j at the rate of an exact
+// one, down to any tolerance. The basis holds the iterates of a Krylov-like
+// sequence; on
 // symmetric shapes, whose lowest eigenvalues cluster (a round sphere, a torus
 // of revolution), this converges where plain inverse iteration would need
 // thousands of steps. When V is full it is restarted with its `restart_size`
@@ -491,20 +541,32 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   result.coarse_iterations = estimate.iterations;
 
   const auto t0 = Clock::now();
-  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis, factored, result);
+  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis,
+                                   options.single_precision, factored, result);
+  result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
+  double refactorization_ms = 0.;
+  auto refactor_in_double = [&] {
+    const auto start = Clock::now();
+    options_after_analysis.same_pattern = true;
+    factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis, false, factored,
+                                     result);
+    result.refactored_in_double = true;
+    refactorization_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
 
   const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
   Complex_dense_matrix start = random_block(n, block, options.random_seed);
   if(estimate.vector.size() == n) start.col(0) = estimate.vector;
   Complex_vector u, Mu;
-  iterate_with_rayleigh_ritz(pencil, factored, options, start, result, u, Mu);
+  iterate_with_rayleigh_ritz(pencil, factored, options, start, refactor_in_double, result, u, Mu);
   const auto t2 = Clock::now();
 
   const double norm_u = std::sqrt((std::max)(0., u.dot(Mu).real()));
   result.vector = (norm_u > 0.) ? Complex_vector(u / norm_u) : u;
-  result.factorization_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  result.solve_ms = std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - t_start)).count();
+  result.factorization_ms = std::chrono::duration<double, std::milli>(t1 - t0).count() + refactorization_ms;
+  result.solve_ms =
+    std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - t_start)).count() - refactorization_ms;
   return result;
 }
 

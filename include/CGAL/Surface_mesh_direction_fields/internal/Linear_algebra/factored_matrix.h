@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/use.h>
@@ -61,12 +62,25 @@ namespace internal {
 // Derived::matrix_to_factor() gives (the whole matrix, or the one triangle
 // a Cholesky solver reads). A negative shift moves the matrix towards
 // A - lambda_1 M, where inverse iteration converges fastest.
+//
+// They also hold the choice of precision: `allow_single_precision(true)`
+// lets the following factorizations be computed and stored in single
+// precision where the package's own factorization applies (only the
+// specialization below has one). A solve then has the accuracy of a
+// single-precision factor (relative errors of about 1e-3 to 1e-6 on the
+// shared meshes), but reads half the bytes: for iterations that correct
+// their own errors, like the eigen-solve (eigen_solve.h), not for the
+// direct solves of aligned fields.
 template <typename Derived>
 class Shifted_factorization
 {
   Derived& derived() { return static_cast<Derived&>(*this); }
+  bool m_single_precision_allowed = false;
 
 public:
+  void allow_single_precision(bool allowed) { m_single_precision_allowed = allowed; }
+  bool single_precision_allowed() const { return m_single_precision_allowed; }
+
   void factor_shifted(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double shift,
                       bool same_pattern = false)
   {
@@ -138,6 +152,9 @@ public:
   {
     return shifted_matrix(A, M, shift);
   }
+
+  // the generic version factors in the solver's precision
+  bool holds_single_precision() const { return false; }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
@@ -296,19 +313,28 @@ struct Cholmod_factor_access : EigenSolver
   static double shift(const EigenSolver& solver) { return (solver.*(&Cholmod_factor_access::m_shiftOffset))[0]; }
 };
 
-// The arrays of a supernodal complex factor with int indices.
-inline Supernodal_factor_view<int> supernodal_view(const cholmod_factor& L)
+// The arrays of a supernodal factor with int indices: its structure, with
+// the entries `values` (in CHOLMOD's layout, in the precision of Scalar).
+template <typename Scalar>
+Supernodal_factor_view<int, Scalar> supernodal_view(const cholmod_factor& L, const Scalar* values)
 {
-  Supernodal_factor_view<int> view;
+  Supernodal_factor_view<int, Scalar> view;
   view.n = L.n;
   view.supernodes = L.nsuper;
   view.super = static_cast<const int*>(L.super);
   view.row_start = static_cast<const int*>(L.pi);
   view.rows = static_cast<const int*>(L.s);
   view.value_start = static_cast<const int*>(L.px);
-  view.values = static_cast<const std::complex<double>*>(L.x);  // interleaved (re, im): the same layout
+  view.values = values;
   view.permutation = static_cast<const int*>(L.Perm);
   return view;
+}
+
+// ... with CHOLMOD's own entries (complex: interleaved (re, im), the layout
+// of std::complex<double>)
+inline Supernodal_factor_view<int> supernodal_view(const cholmod_factor& L)
+{
+  return supernodal_view(L, static_cast<const std::complex<double>*>(L.x));
 }
 
 template <typename Matrix, int UpLo, typename Derived>
@@ -336,12 +362,18 @@ constexpr std::size_t parallel_factorization_minimum_entries = std::size_t(1) <<
 class Parallel_supernodal_cholmod
 {
 #ifdef EIGEN_CHOLMODSUPPORT_MODULE_H
+  typedef std::complex<float> Single;
   Supernodal_factor_view<int> m_view;
   std::unique_ptr<Supernodal_solve_plan> m_plan;           // kept while the analysis is
   std::unique_ptr<Supernodal_updates<int> > m_updates;
   cholmod_factor* m_factored = nullptr;  // the factor this class factored, until the next factorization
   cholmod_common* m_common = nullptr;
   bool m_ready = false;                  // the factor is there, the plan fits it
+  // a factor in single precision: its entries (CHOLMOD's factor then keeps
+  // none), kept from one such factorization to the next
+  Eigen::Matrix<Single, Eigen::Dynamic, 1> m_single_values;
+  Supernodal_factor_view<int, Single> m_single_view;
+  bool m_single = false;
 
   static bool has_usable_layout(const cholmod_factor* L, bool numeric)
   {
@@ -368,30 +400,59 @@ class Parallel_supernodal_cholmod
     return std::is_same<EigenSolver, Eigen::CholmodSupernodalLLT<Complex_sparse_matrix, Eigen::Lower> >::value;
   }
 
+  void release_single_precision_factor() { Eigen::Matrix<Single, Eigen::Dynamic, 1>().swap(m_single_values); }
+
+  // Factors P S P^T (`lower`) in single precision, into the package's own
+  // array. False if a pivot is not positive in single precision, which
+  // says nothing sure about S: the caller then factors in double precision.
+  bool factor_in_single_precision(const cholmod_factor& L, const Complex_sparse_matrix& lower)
+  {
+    if(static_cast<std::size_t>(m_single_values.size()) != L.xsize)
+    {
+      release_single_precision_factor();
+      m_single_values.resize(static_cast<Eigen::Index>(L.xsize));  // not written: the advice comes first
+      advise_huge_pages(m_single_values.data(), L.xsize * sizeof(Single));
+    }
+    m_single_view = supernodal_view(L, m_single_values.data());
+    const Eigen::SparseMatrix<Single> lower_in_single = lower.cast<Single>();
+    if(supernodal_factorize(m_single_view, m_single_values.data(), lower_in_single, *m_updates, *m_plan) >= 0)
+    {
+      release_single_precision_factor();
+      return false;
+    }
+    m_single = true;
+    m_ready = true;
+    return true;
+  }
+
 public:
   enum Outcome { not_attempted, factored, not_positive_definite };
 
-  // Factors S (the lower triangle) into the solver's analyzed factor, or
-  // returns not_attempted (the caller has CHOLMOD factor it).
+  // Factors S (the lower triangle) into the solver's analyzed factor, or in
+  // single precision into the package's own (if `single_allowed`, and if
+  // the kernels are there), or returns not_attempted (the caller has
+  // CHOLMOD factor it).
   template <typename EigenSolver>
-  Outcome factor(EigenSolver& solver, const Complex_sparse_matrix& S, bool new_structure)
+  Outcome factor(EigenSolver& solver, const Complex_sparse_matrix& S, bool new_structure, bool single_allowed)
   {
-    m_ready = false;
-    m_factored = nullptr;
+    reset();
     if constexpr(is_lower_supernodal_llt<EigenSolver>())
     {
       cholmod_factor* L = Cholmod_factor_access<EigenSolver>::factor(solver);
       if(!has_usable_layout(L, false) || L->xsize < parallel_factorization_minimum_entries ||
-         Cholmod_factor_access<EigenSolver>::shift(solver) != 0. || !dense_kernels().complete())
+         Cholmod_factor_access<EigenSolver>::shift(solver) != 0. || !dense_kernels<double>().complete())
         return not_attempted;
       read_structure(*L, new_structure);
       if(!m_plan->valid()) return not_attempted;
+      if(!m_updates) m_updates = std::make_unique<Supernodal_updates<int> >(m_view);
+      const Complex_sparse_matrix lower = permuted_lower_triangle(S, m_view.permutation);
+      if(single_allowed && dense_kernels<float>().complete() && factor_in_single_precision(*L, lower))
+        return factored;
+      release_single_precision_factor();
       cholmod_common& common = solver.cholmod();
       if(L->xtype == CHOLMOD_PATTERN && !cholmod_change_factor(CHOLMOD_COMPLEX, true, true, true, true, L, &common))
         return not_attempted;
       m_view = supernodal_view(*L);  // now with values
-      if(!m_updates) m_updates = std::make_unique<Supernodal_updates<int> >(m_view);
-      const Complex_sparse_matrix lower = permuted_lower_triangle(S, m_view.permutation);
       const std::ptrdiff_t column =
         supernodal_factorize(m_view, static_cast<Complex*>(L->x), lower, *m_updates, *m_plan);
       L->is_ll = true;
@@ -407,6 +468,7 @@ public:
       CGAL_USE(solver);
       CGAL_USE(S);
       CGAL_USE(new_structure);
+      CGAL_USE(single_allowed);
       return not_attempted;
     }
   }
@@ -415,8 +477,8 @@ public:
   template <typename EigenSolver>
   void update(const EigenSolver& solver, bool new_structure)
   {
-    m_ready = false;
-    m_factored = nullptr;
+    reset();
+    release_single_precision_factor();
     if constexpr(decltype(is_cholmod_solver(&solver))::value)
     {
       const cholmod_factor* L = Cholmod_factor_access<EigenSolver>::factor(solver);
@@ -439,17 +501,26 @@ public:
   {
     m_ready = false;
     m_factored = nullptr;
+    m_single = false;
   }
   bool available() const { return m_ready; }
   // whether the last factorization was this class's (solves of blocks then
   // go to cholmod_solve here, the wrapper believing itself unfactored)
-  bool factored_here() const { return m_factored != nullptr; }
+  bool factored_here() const { return m_factored != nullptr || m_single; }
+  bool holds_single_precision() const { return m_single; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
+    if(m_single) return supernodal_solve(m_single_view, *m_plan, B.col(0));
     return supernodal_solve(m_view, *m_plan, B.col(0));
   }
   Complex_dense_matrix solve_block(const Complex_dense_matrix& B) const
   {
+    if(m_single)  // CHOLMOD has no single precision: column by column
+    {
+      Complex_dense_matrix X(B.rows(), B.cols());
+      for(Eigen::Index j = 0; j < B.cols(); ++j) X.col(j) = supernodal_solve(m_single_view, *m_plan, B.col(j));
+      return X;
+    }
     Complex_dense_matrix rhs = B;
     cholmod_dense b = Eigen::viewAsCholmod(rhs);
     cholmod_dense* x = cholmod_solve(CHOLMOD_A, m_factored, &b, m_common);
@@ -462,12 +533,13 @@ public:
 public:
   enum Outcome { not_attempted, factored, not_positive_definite };
   template <typename EigenSolver>
-  Outcome factor(EigenSolver&, const Complex_sparse_matrix&, bool) { return not_attempted; }
+  Outcome factor(EigenSolver&, const Complex_sparse_matrix&, bool, bool) { return not_attempted; }
   template <typename EigenSolver>
   void update(const EigenSolver&, bool) {}
   void reset() {}
   bool available() const { return false; }
   bool factored_here() const { return false; }
+  bool holds_single_precision() const { return false; }
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const { return B; }
   Complex_dense_matrix solve_block(const Complex_dense_matrix& B) const { return B; }
 #endif
@@ -525,8 +597,7 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
   {
     EigenSolver& solver = m_traits.solver();
     analyze(S, same_pattern);
-    m_parallel.reset();
-    const auto outcome = m_parallel.factor(solver, S, m_new_structure);
+    const auto outcome = m_parallel.factor(solver, S, m_new_structure, this->single_precision_allowed());
     if(outcome != Parallel_supernodal_cholmod::not_attempted) return outcome == Parallel_supernodal_cholmod::factored;
     if(trial)
     {
@@ -595,6 +666,8 @@ public:
   bool solves_in_parallel() const { return m_parallel.available(); }
   // Whether the last factorization was the package's parallel one.
   bool factored_in_parallel() const { return m_parallel.factored_here(); }
+  // Whether it was in single precision (see allow_single_precision()).
+  bool holds_single_precision() const { return m_parallel.holds_single_precision(); }
 
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {

@@ -44,7 +44,11 @@
 // few large BLAS calls; most supernodes of a surface mesh's matrix are small.
 //
 // Each supernode's arithmetic is the same whichever thread does it: the
-// factor does not depend on the scheduling.
+// factor does not depend on the scheduling. The factor is computed in the
+// precision of its entries: std::complex<double>, or std::complex<float>
+// (the single-precision kernels), for a factor that half the memory holds
+// and half the time reads, where inexact solves are enough
+// (factored_matrix.h).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -74,7 +78,8 @@ template <typename Index>
 class Supernodal_updates
 {
 public:
-  explicit Supernodal_updates(const Supernodal_factor_view<Index>& L)
+  template <typename Scalar>
+  explicit Supernodal_updates(const Supernodal_factor_view<Index, Scalar>& L)
   {
     const std::size_t ns = L.supernodes;
     const std::vector<std::size_t> supernode_of_column = supernode_of_each_column(L);
@@ -98,8 +103,8 @@ public:
 private:
   // update(t, d, p) for each supernode d, in increasing order, and each
   // supernode t its rows below the diagonal block reach, first at position p
-  template <typename Update>
-  static void for_each_update(const Supernodal_factor_view<Index>& L, const std::vector<std::size_t>& supernode_of_column,
+  template <typename Scalar, typename Update>
+  static void for_each_update(const Supernodal_factor_view<Index, Scalar>& L, const std::vector<std::size_t>& supernode_of_column,
                               const Update& update)
   {
     for(std::size_t d = 0; d < L.supernodes; ++d)
@@ -121,28 +126,28 @@ private:
 };
 
 // What one thread needs while it factors supernodes.
-template <typename Index>
+template <typename Index, typename Scalar>
 struct Supernode_workspace
 {
   std::vector<Index> position;  // row of the factor -> its row in the current block
-  std::vector<Complex> product;
+  std::vector<Scalar> product;
   explicit Supernode_workspace(std::size_t n) : position(n) {}
 };
 
 // The block of supernode s, set to its columns of P A P^T (`lower`: the
 // lower triangle of P A P^T, column-compressed).
-template <typename Index>
-void assemble_supernode(const Supernodal_factor_view<Index>& L, Complex* values, const Complex_sparse_matrix& lower,
-                        std::size_t s, Supernode_workspace<Index>& work)
+template <typename Index, typename Scalar>
+void assemble_supernode(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
+                        const Eigen::SparseMatrix<Scalar>& lower, std::size_t s, Supernode_workspace<Index, Scalar>& work)
 {
   const Index first = L.super[s], columns = L.super[s + 1] - first, rows = L.row_start[s + 1] - L.row_start[s];
-  Complex* block = values + L.value_start[s];
-  std::fill(block, block + static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), Complex(0.));
+  Scalar* block = values + L.value_start[s];
+  std::fill(block, block + static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), Scalar(0));
   for(Index i = 0; i < rows; ++i) work.position[static_cast<std::size_t>(L.rows[L.row_start[s] + i])] = i;
   for(Index j = 0; j < columns; ++j)
   {
-    Complex* column = block + static_cast<std::size_t>(j) * static_cast<std::size_t>(rows);
-    for(Complex_sparse_matrix::InnerIterator it(lower, first + j); it; ++it)
+    Scalar* column = block + static_cast<std::size_t>(j) * static_cast<std::size_t>(rows);
+    for(typename Eigen::SparseMatrix<Scalar>::InnerIterator it(lower, first + j); it; ++it)
       column[work.position[static_cast<std::size_t>(it.row())]] += it.value();
   }
 }
@@ -151,13 +156,14 @@ void assemble_supernode(const Supernodal_factor_view<Index>& L, Complex* values,
 // descendant d with the rows r1 (those among s's columns) and r2 (all of
 // its rows from r1 on): C = L_d[r2] L_d[r1]^*, the triangle of its top
 // square by a rank-k update, the rest by a product, then scattered.
-template <typename Index>
-void apply_updates(const Supernodal_factor_view<Index>& L, Complex* values, const Supernodal_updates<Index>& updates,
-                   std::size_t s, Supernode_workspace<Index>& work)
+template <typename Index, typename Scalar>
+void apply_updates(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values, const Supernodal_updates<Index>& updates,
+                   std::size_t s, Supernode_workspace<Index, Scalar>& work)
 {
-  const Dense_kernels& blas = dense_kernels();
+  typedef typename Scalar::value_type Real;
+  const Dense_kernels<Real>& blas = dense_kernels<Real>();
   const Index first = L.super[s], end_column = L.super[s + 1], rows = L.row_start[s + 1] - L.row_start[s];
-  Complex* block = values + L.value_start[s];
+  Scalar* block = values + L.value_start[s];
   for(std::size_t k = updates.begin(s); k < updates.end(s); ++k)
   {
     const std::size_t d = updates.source(k);
@@ -168,17 +174,17 @@ void apply_updates(const Supernodal_factor_view<Index>& L, Complex* values, cons
     while(p2 < d_rows && r[p2] < end_column) ++p2;
     int n1 = static_cast<int>(p2 - p1), n2 = static_cast<int>(d_rows - p1), rest = n2 - n1;
     work.product.resize(static_cast<std::size_t>(n1) * static_cast<std::size_t>(n2));
-    Complex* C = work.product.data();
-    const Complex* Ld = values + L.value_start[d] + p1;
-    const double one = 1., zero = 0.;
-    const Complex complex_one(1.), complex_zero(0.);
+    Scalar* C = work.product.data();
+    const Scalar* Ld = values + L.value_start[d] + p1;
+    const Real one = 1, zero = 0;
+    const Scalar complex_one(1), complex_zero(0);
     blas.herk("L", "N", &n1, &d_columns, &one, Ld, &ld, &zero, C, &n2);
     if(rest > 0)
       blas.gemm("N", "C", &rest, &n1, &d_columns, &complex_one, Ld + n1, &ld, Ld, &ld, &complex_zero, C + n1, &n2);
     for(int jj = 0; jj < n1; ++jj)
     {
-      Complex* column = block + static_cast<std::size_t>(r[p1 + jj] - first) * static_cast<std::size_t>(rows);
-      const Complex* c = C + static_cast<std::size_t>(jj) * static_cast<std::size_t>(n2);
+      Scalar* column = block + static_cast<std::size_t>(r[p1 + jj] - first) * static_cast<std::size_t>(rows);
+      const Scalar* c = C + static_cast<std::size_t>(jj) * static_cast<std::size_t>(n2);
       for(int ii = jj; ii < n2; ++ii) column[work.position[static_cast<std::size_t>(r[p1 + ii])]] -= c[ii];
     }
   }
@@ -187,23 +193,25 @@ void apply_updates(const Supernodal_factor_view<Index>& L, Complex* values, cons
 // Factors the diagonal block of supernode s and solves the rows below with
 // it. Returns the column where the matrix showed not to be positive
 // definite, or -1.
-template <typename Index>
-std::ptrdiff_t factor_supernode_block(const Supernodal_factor_view<Index>& L, Complex* values, std::size_t s)
+template <typename Index, typename Scalar>
+std::ptrdiff_t factor_supernode_block(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values, std::size_t s)
 {
-  const Dense_kernels& blas = dense_kernels();
+  typedef typename Scalar::value_type Real;
+  const Dense_kernels<Real>& blas = dense_kernels<Real>();
   int columns = static_cast<int>(L.super[s + 1] - L.super[s]);
   int rows = static_cast<int>(L.row_start[s + 1] - L.row_start[s]), below = rows - columns, info = 0;
-  Complex* block = values + L.value_start[s];
+  Scalar* block = values + L.value_start[s];
   blas.potrf("L", &columns, block, &rows, &info);
   if(info != 0) return static_cast<std::ptrdiff_t>(L.super[s]) + (info > 0 ? info - 1 : 0);
-  const Complex complex_one(1.);
+  const Scalar complex_one(1);
   if(below > 0) blas.trsm("R", "L", "C", "N", &below, &columns, &complex_one, block, &rows, block + columns, &rows);
   return -1;
 }
 
-template <typename Index>
-std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index>& L, Complex* values, const Complex_sparse_matrix& lower,
-                                const Supernodal_updates<Index>& updates, std::size_t s, Supernode_workspace<Index>& work)
+template <typename Index, typename Scalar>
+std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
+                                const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
+                                std::size_t s, Supernode_workspace<Index, Scalar>& work)
 {
   assemble_supernode(L, values, lower, s, work);
   apply_updates(L, values, updates, s, work);
@@ -213,10 +221,11 @@ std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index>& L, Complex*
 // Factors P A P^T = L L^* into `values` (the factor's layout in L, whose
 // own values are not read), `lower` being the lower triangle of P A P^T.
 // Returns -1, or a column where P A P^T showed not to be positive definite
-// (the factor is then unusable). Needs dense_kernels().complete().
-template <typename Index>
-std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index>& L, Complex* values,
-                                    const Complex_sparse_matrix& lower, const Supernodal_updates<Index>& updates,
+// (the factor is then unusable). Needs dense_kernels<Real>().complete() for
+// Scalar = std::complex<Real>.
+template <typename Index, typename Scalar>
+std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
+                                    const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
                                     const Supernodal_solve_plan& plan)
 {
   const std::vector<Supernodal_solve_plan::Task>& tasks = plan.tasks();
@@ -238,7 +247,7 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index>& L, Comp
     Single_threaded_blas one_thread_each;
     parallel_for_each_task(tasks.size(), [&](std::size_t i) {
       const Supernodal_solve_plan::Task& task = tasks[order[i]];
-      Supernode_workspace<Index> workspace(L.n);
+      Supernode_workspace<Index, Scalar> workspace(L.n);
       for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0; ++s)
       {
         const std::ptrdiff_t column = factor_supernode(L, values, lower, updates, s, workspace);
@@ -247,7 +256,7 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index>& L, Comp
     });
   }
   if(failed_column.load() >= 0) return failed_column.load();
-  Supernode_workspace<Index> workspace(L.n);
+  Supernode_workspace<Index, Scalar> workspace(L.n);
   for(std::size_t s : plan.top())
   {
     const std::ptrdiff_t column = factor_supernode(L, values, lower, updates, s, workspace);

@@ -22,9 +22,11 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <cstdint>
 #include <queue>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -56,7 +58,9 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-template <typename Index>
+// The factor's entries are std::complex<double>, or std::complex<float> for
+// a factor computed in single precision.
+template <typename Index, typename Scalar = std::complex<double> >
 struct Supernodal_factor_view
 {
   std::size_t n = 0, supernodes = 0;
@@ -64,13 +68,13 @@ struct Supernodal_factor_view
   const Index* row_start = nullptr;    // supernodes + 1 offsets into rows
   const Index* rows = nullptr;
   const Index* value_start = nullptr;  // supernodes + 1 offsets into values
-  const std::complex<double>* values = nullptr;
+  const Scalar* values = nullptr;
   const Index* permutation = nullptr;  // row k of P A P^T is row permutation[k] of A (null: identity)
 };
 
 // The supernode that holds each column of the factor.
-template <typename Index>
-std::vector<std::size_t> supernode_of_each_column(const Supernodal_factor_view<Index>& L)
+template <typename Index, typename Scalar>
+std::vector<std::size_t> supernode_of_each_column(const Supernodal_factor_view<Index, Scalar>& L)
 {
   std::vector<std::size_t> supernode_of_column(L.n);
   for(std::size_t s = 0; s < L.supernodes; ++s)
@@ -92,8 +96,8 @@ public:
     std::size_t first, last;  // supernodes [first, last], a whole subtree
   };
 
-  template <typename Index>
-  explicit Supernodal_solve_plan(const Supernodal_factor_view<Index>& L, std::size_t task_budget = 16)
+  template <typename Index, typename Scalar>
+  explicit Supernodal_solve_plan(const Supernodal_factor_view<Index, Scalar>& L, std::size_t task_budget = 16)
   {
     const Tree tree = read_tree(L);
     m_valid = tree.postordered;
@@ -120,8 +124,8 @@ private:
 
   // The supernodal elimination tree: the parent of a supernode holds the
   // first row below its diagonal block.
-  template <typename Index>
-  static Tree read_tree(const Supernodal_factor_view<Index>& L)
+  template <typename Index, typename Scalar>
+  static Tree read_tree(const Supernodal_factor_view<Index, Scalar>& L)
   {
     const std::size_t ns = L.supernodes;
     const std::vector<std::size_t> supernode_of_column = supernode_of_each_column(L);
@@ -155,8 +159,8 @@ private:
   // Splits the heaviest subtree until each is at most 1 / budget of the
   // whole: the root of a split subtree joins the top, its children become
   // subtrees.
-  template <typename Index>
-  void cut(const Supernodal_factor_view<Index>& L, const Tree& tree, std::size_t task_budget)
+  template <typename Index, typename Scalar>
+  void cut(const Supernodal_factor_view<Index, Scalar>& L, const Tree& tree, std::size_t task_budget)
   {
     const std::size_t ns = L.supernodes;
     std::vector<std::vector<std::size_t> > children(ns);
@@ -207,8 +211,8 @@ private:
   // of that task or of the top (true of an elimination tree, whose
   // off-diagonal rows are ancestors; checked, since the tree was read from
   // the first of them only).
-  template <typename Index>
-  bool tasks_touch_only_the_top(const Supernodal_factor_view<Index>& L) const
+  template <typename Index, typename Scalar>
+  bool tasks_touch_only_the_top(const Supernodal_factor_view<Index, Scalar>& L) const
   {
     for(const Task& task : m_tasks)
     {
@@ -231,21 +235,26 @@ private:
   std::vector<std::int32_t> m_top_position;
 };
 
-// A supernode's stored block of the factor, read in place.
-typedef Eigen::Map<const Complex_dense_matrix> Supernode_block;
+// A supernode's stored block of the factor, read in place, and the vectors
+// of a solve, in the factor's precision.
+template <typename Scalar>
+using Supernode_block = Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> >;
+template <typename Scalar>
+using Solve_vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 
-template <typename Index>
-Supernode_block supernode_block(const Supernodal_factor_view<Index>& L, std::size_t s)
+template <typename Index, typename Scalar>
+Supernode_block<Scalar> supernode_block(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s)
 {
   const Eigen::Index rows = static_cast<Eigen::Index>(L.row_start[s + 1] - L.row_start[s]);
   const Eigen::Index columns = static_cast<Eigen::Index>(L.super[s + 1] - L.super[s]);
-  return Supernode_block(L.values + L.value_start[s], rows, columns);
+  return Supernode_block<Scalar>(L.values + L.value_start[s], rows, columns);
 }
 
 // The rows below supernode s's diagonal block: y at them, into scratch; and
 // each scratch value, with its row, to subtract(row, value).
-template <typename Index>
-void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Complex_vector& y, Complex_vector& scratch)
+template <typename Index, typename Scalar>
+void gather_below(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, const Solve_vector<Scalar>& y,
+                  Solve_vector<Scalar>& scratch)
 {
   const Index columns = L.super[s + 1] - L.super[s];
   const Index* rows = L.rows + L.row_start[s] + columns;
@@ -253,29 +262,32 @@ void gather_below(const Supernodal_factor_view<Index>& L, std::size_t s, const C
   for(Eigen::Index i = 0; i < scratch.size(); ++i) scratch[i] = y[static_cast<Eigen::Index>(rows[i])];
 }
 
-template <typename Index, typename Subtract>
-void scatter_below(const Supernodal_factor_view<Index>& L, std::size_t s, const Complex_vector& scratch, const Subtract& subtract)
+template <typename Index, typename Scalar, typename Subtract>
+void scatter_below(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, const Solve_vector<Scalar>& scratch,
+                   const Subtract& subtract)
 {
   const Index* rows = L.rows + L.row_start[s] + (L.super[s + 1] - L.super[s]);
   for(Eigen::Index i = 0; i < scratch.size(); ++i) subtract(static_cast<std::size_t>(rows[i]), scratch[i]);
 }
 
 // The kernels of the two steps below, on complex numbers stored as pairs of
-// doubles (the layout std::complex guarantees), in plain loops: most
+// reals (the layout std::complex guarantees), in plain loops: most
 // supernodes are small (at 400,000 faces, 23,000 supernodes, 44% of the
 // entries in ones of 9 to 16 columns), and for them the fixed cost of each
 // call into Eigen's triangular solve and matrix-vector product outweighed the
 // work.
 //
 // t[i] -= b[i] y for i in [0, count).
-inline void subtract_multiple(const Complex* b, const Complex& y, Complex* t, Eigen::Index count)
+template <typename Real>
+void subtract_multiple(const std::complex<Real>* b, const std::complex<Real>& y, std::complex<Real>* t,
+                       Eigen::Index count)
 {
-  const double yr = y.real(), yi = y.imag();
-  const double* bd = reinterpret_cast<const double*>(b);
-  double* td = reinterpret_cast<double*>(t);
+  const Real yr = y.real(), yi = y.imag();
+  const Real* bd = reinterpret_cast<const Real*>(b);
+  Real* td = reinterpret_cast<Real*>(t);
   for(Eigen::Index i = 0; i < 2 * count; i += 2)
   {
-    const double br = bd[i], bi = bd[i + 1];
+    const Real br = bd[i], bi = bd[i + 1];
     td[i] -= br * yr - bi * yi;
     td[i + 1] -= br * yi + bi * yr;
   }
@@ -284,11 +296,12 @@ inline void subtract_multiple(const Complex* b, const Complex& y, Complex* t, Ei
 // The sum of conj(b[i]) t[i] for i in [0, count), in four interleaved
 // partial sums (independent chains of additions; a fixed order, so the same
 // on every machine).
-inline Complex adjoint_dot(const Complex* b, const Complex* t, Eigen::Index count)
+template <typename Real>
+std::complex<Real> adjoint_dot(const std::complex<Real>* b, const std::complex<Real>* t, Eigen::Index count)
 {
-  const double* bd = reinterpret_cast<const double*>(b);
-  const double* td = reinterpret_cast<const double*>(t);
-  double re[4] = {0., 0., 0., 0.}, im[4] = {0., 0., 0., 0.};
+  const Real* bd = reinterpret_cast<const Real*>(b);
+  const Real* td = reinterpret_cast<const Real*>(t);
+  Real re[4] = {0, 0, 0, 0}, im[4] = {0, 0, 0, 0};
   Eigen::Index i = 0;
   for(; i + 8 <= 2 * count; i += 8)
     for(int k = 0; k < 4; ++k)
@@ -301,7 +314,7 @@ inline Complex adjoint_dot(const Complex* b, const Complex* t, Eigen::Index coun
     re[k] += bd[i] * td[i] + bd[i + 1] * td[i + 1];
     im[k] += bd[i] * td[i + 1] - bd[i + 1] * td[i];
   }
-  return Complex((re[0] + re[1]) + (re[2] + re[3]), (im[0] + im[1]) + (im[2] + im[3]));
+  return std::complex<Real>((re[0] + re[1]) + (re[2] + re[3]), (im[0] + im[1]) + (im[2] + im[3]));
 }
 
 // Asks the processor to start loading the entries of supernode s (a hint,
@@ -310,8 +323,8 @@ inline Complex adjoint_dot(const Complex* b, const Complex* t, Eigen::Index coun
 // next supernode while one is solved makes the backward solve of the
 // subtrees faster (the forward solve, which walks up through memory, gains
 // nothing from it).
-template <typename Index>
-void prefetch_supernode(const Supernodal_factor_view<Index>& L, std::size_t s)
+template <typename Index, typename Scalar>
+void prefetch_supernode(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s)
 {
   const auto* begin = L.values + L.value_start[s];
   prefetch_range(begin, static_cast<std::size_t>(L.value_start[s + 1] - L.value_start[s]) * sizeof(*begin));
@@ -322,11 +335,11 @@ void prefetch_supernode(const Supernodal_factor_view<Index>& L, std::size_t s)
 // subtract(r, value). One pass down the block's columns, each read once,
 // contiguously: t holds the supernode's unknowns, then (from zero) minus
 // the products of the rows below. The diagonal of an LL^* factor is real.
-template <typename Index, typename Subtract>
-void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& t,
-                       const Subtract& subtract)
+template <typename Index, typename Scalar, typename Subtract>
+void forward_supernode(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                       Solve_vector<Scalar>& t, const Subtract& subtract)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), rows = block.rows();
   const Eigen::Index first = static_cast<Eigen::Index>(L.super[s]);
   t.resize(rows);
@@ -334,7 +347,7 @@ void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Co
   t.tail(rows - columns).setZero();
   for(Eigen::Index j = 0; j < columns; ++j)
   {
-    const Complex* column = block.data() + j * rows;
+    const Scalar* column = block.data() + j * rows;
     t[j] /= column[j].real();
     subtract_multiple(column + j + 1, t[j], t.data() + j + 1, rows - j - 1);
   }
@@ -348,10 +361,11 @@ void forward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Co
 // and Eigen interleaves them, which was faster than a loop over the columns
 // here); the triangle is solved from the last column up, each column's
 // entries read contiguously.
-template <typename Index>
-void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
+template <typename Index, typename Scalar>
+void backward_supernode(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                        Solve_vector<Scalar>& scratch)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), below = block.rows() - columns;
   const Eigen::Index first = static_cast<Eigen::Index>(L.super[s]);
   auto ys = y.segment(first, columns);
@@ -362,7 +376,7 @@ void backward_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, C
   }
   for(Eigen::Index j = columns; j-- > 0;)
   {
-    const Complex* column = block.data() + j * block.rows();
+    const Scalar* column = block.data() + j * block.rows();
     ys[j] = (ys[j] - adjoint_dot(column + j + 1, ys.data() + j + 1, columns - j - 1)) / column[j].real();
   }
 }
@@ -386,11 +400,11 @@ void for_each_chunk_of(Eigen::Index begin, Eigen::Index end, Eigen::Index chunk,
   });
 }
 
-template <typename Index, typename Subtract>
-void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch,
-                                   const Subtract& subtract)
+template <typename Index, typename Scalar, typename Subtract>
+void forward_supernode_in_parallel(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                                   Solve_vector<Scalar>& scratch, const Subtract& subtract)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), rows = block.rows(), below = rows - columns;
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   scratch.setZero(below);
@@ -401,7 +415,7 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::
     const auto solved = ys.segment(c0, w);
     // rows [c0 + w, rows): the rest of the diagonal block, then the rows below
     for_each_chunk_of(c0 + w, rows, (std::max)(Eigen::Index(64), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
-      const Complex_vector product = block.block(a, c0, b - a, w) * solved;
+      const Solve_vector<Scalar> product = block.block(a, c0, b - a, w) * solved;
       for(Eigen::Index i = a; i < b; ++i)
       {
         if(i < columns) ys[i] -= product[i - a];
@@ -412,10 +426,11 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::
   scatter_below(L, s, scratch, subtract);
 }
 
-template <typename Index>
-void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
+template <typename Index, typename Scalar>
+void backward_supernode_in_parallel(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                                    Solve_vector<Scalar>& scratch)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   const Eigen::Index columns = block.cols(), below = block.rows() - columns;
   auto ys = y.segment(static_cast<Eigen::Index>(L.super[s]), columns);
   if(below > 0)
@@ -431,7 +446,7 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std:
   {
     const Eigen::Index c0 = (std::max)(Eigen::Index(0), end - panel), w = end - c0;
     block.block(c0, c0, w, w).template triangularView<Eigen::Lower>().adjoint().solveInPlace(ys.segment(c0, w));
-    const Complex_vector solved = ys.segment(c0, w);
+    const Solve_vector<Scalar> solved = ys.segment(c0, w);
     for_each_chunk_of(0, c0, (std::max)(Eigen::Index(1), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
       ys.segment(a, b - a).noalias() -= block.block(c0, a, w, b - a).adjoint() * solved;
     });
@@ -442,77 +457,99 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index>& L, std:
 // Whether a supernode is worth splitting over threads.
 inline bool is_large_supernode(Eigen::Index rows, Eigen::Index columns) { return rows * columns >= 4 * supernode_chunk_entries; }
 
-template <typename Index, typename Subtract>
-void forward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch,
-                           const Subtract& subtract)
+template <typename Index, typename Scalar, typename Subtract>
+void forward_top_supernode(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                           Solve_vector<Scalar>& scratch, const Subtract& subtract)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   if(is_large_supernode(block.rows(), block.cols())) forward_supernode_in_parallel(L, s, y, scratch, subtract);
   else forward_supernode(L, s, y, scratch, subtract);
 }
 
-template <typename Index>
-void backward_top_supernode(const Supernodal_factor_view<Index>& L, std::size_t s, Complex_vector& y, Complex_vector& scratch)
+template <typename Index, typename Scalar>
+void backward_top_supernode(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
+                            Solve_vector<Scalar>& scratch)
 {
-  const Supernode_block block = supernode_block(L, s);
+  const Supernode_block<Scalar> block = supernode_block(L, s);
   if(is_large_supernode(block.rows(), block.cols())) backward_supernode_in_parallel(L, s, y, scratch);
   else backward_supernode(L, s, y, scratch);
 }
 
 
-// x = A^{-1} b for P A P^T = L L^*.
-template <typename Index>
-Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>
-supernodal_solve(const Supernodal_factor_view<Index>& L, const Supernodal_solve_plan& plan,
-                 const Eigen::Ref<const Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1> >& b)
+// y <- (L L^*)^{-1} y, in the permuted numbering.
+template <typename Index, typename Scalar>
+void solve_permuted(const Supernodal_factor_view<Index, Scalar>& L, const Supernodal_solve_plan& plan,
+                    Solve_vector<Scalar>& y)
 {
-  const Eigen::Index n = static_cast<Eigen::Index>(L.n);
-  auto permuted = [&L](std::size_t i) {
-    return static_cast<Eigen::Index>(L.permutation ? static_cast<std::size_t>(L.permutation[i]) : i);
-  };
-  Complex_vector y(n);
-  parallel_for_each_index(L.n, [&](std::size_t i) { y[static_cast<Eigen::Index>(i)] = b[permuted(i)]; });
-
   // forward: the tasks, each with its buffer of updates of the top
   const std::vector<Supernodal_solve_plan::Task>& tasks = plan.tasks();
   const std::vector<std::size_t>& top_columns = plan.top_columns();
-  std::vector<Complex_vector> buffers(tasks.size());
+  std::vector<Solve_vector<Scalar> > buffers(tasks.size());
   parallel_for_each_task(tasks.size(), [&](std::size_t t) {
-    Complex_vector& buffer = buffers[t];
+    Solve_vector<Scalar>& buffer = buffers[t];
     buffer.setZero(static_cast<Eigen::Index>(top_columns.size()));
-    Complex_vector scratch;
+    Solve_vector<Scalar> scratch;
     const std::size_t first_column = static_cast<std::size_t>(L.super[tasks[t].first]);
     const std::size_t end_column = static_cast<std::size_t>(L.super[tasks[t].last + 1]);
     for(std::size_t s = tasks[t].first; s <= tasks[t].last; ++s)
-      forward_supernode(L, s, y, scratch, [&](std::size_t row, const Complex& value) {
+      forward_supernode(L, s, y, scratch, [&](std::size_t row, const Scalar& value) {
         if(row >= first_column && row < end_column)
           y[static_cast<Eigen::Index>(row)] -= value;
         else
           buffer[plan.top_position(row)] += value;  // an ancestor: in the top
       });
   });
-  for(const Complex_vector& buffer : buffers)  // in task order: deterministic
+  for(const Solve_vector<Scalar>& buffer : buffers)  // in task order: deterministic
     for(std::size_t p = 0; p < top_columns.size(); ++p)
       y[static_cast<Eigen::Index>(top_columns[p])] -= buffer[static_cast<Eigen::Index>(p)];
   buffers.clear();
   {
-    Complex_vector scratch;
+    Solve_vector<Scalar> scratch;
     for(std::size_t s : plan.top())
-      forward_top_supernode(L, s, y, scratch, [&](std::size_t row, const Complex& value) { y[static_cast<Eigen::Index>(row)] -= value; });
+      forward_top_supernode(L, s, y, scratch, [&](std::size_t row, const Scalar& value) { y[static_cast<Eigen::Index>(row)] -= value; });
     // backward: the top, then the tasks
     for(auto s = plan.top().rbegin(); s != plan.top().rend(); ++s) backward_top_supernode(L, *s, y, scratch);
   }
   parallel_for_each_task(tasks.size(), [&](std::size_t t) {
-    Complex_vector scratch;
+    Solve_vector<Scalar> scratch;
     for(std::size_t s = tasks[t].last + 1; s-- > tasks[t].first;)
     {
       if(s > tasks[t].first) prefetch_supernode(L, s - 1);
       backward_supernode(L, s, y, scratch);
     }
   });
+}
 
+// x = A^{-1} b for P A P^T = L L^*, in double precision whatever the
+// factor's. A factor in single precision solves in single precision, on b
+// scaled to a largest part of 1: the right-hand sides of the eigen-solve
+// are residuals, whose entries can lie far below the smallest float.
+template <typename Index, typename Scalar>
+Complex_vector supernodal_solve(const Supernodal_factor_view<Index, Scalar>& L, const Supernodal_solve_plan& plan,
+                                const Eigen::Ref<const Complex_vector>& b)
+{
+  const Eigen::Index n = static_cast<Eigen::Index>(L.n);
+  auto permuted = [&L](std::size_t i) {
+    return static_cast<Eigen::Index>(L.permutation ? static_cast<std::size_t>(L.permutation[i]) : i);
+  };
+  double scale = 1.;
+  if(!std::is_same<Scalar, Complex>::value && n > 0)
+  {
+    // the largest real or imaginary part: as good a scale as the largest
+    // modulus, without its square roots
+    const double largest = Eigen::Map<const Eigen::VectorXd>(reinterpret_cast<const double*>(b.data()), 2 * n)
+                             .cwiseAbs().maxCoeff();
+    if(largest > 0. && std::isfinite(largest)) scale = largest;
+  }
+  Solve_vector<Scalar> y(n);
+  parallel_for_each_index(L.n, [&](std::size_t i) {
+    y[static_cast<Eigen::Index>(i)] = Scalar(b[permuted(i)] / scale);
+  });
+  solve_permuted(L, plan, y);
   Complex_vector x(n);
-  parallel_for_each_index(L.n, [&](std::size_t i) { x[permuted(i)] = y[static_cast<Eigen::Index>(i)]; });
+  parallel_for_each_index(L.n, [&](std::size_t i) {
+    x[permuted(i)] = Complex(y[static_cast<Eigen::Index>(i)]) * scale;
+  });
   return x;
 }
 
