@@ -414,7 +414,7 @@ class Parallel_supernodal_cholmod
       advise_huge_pages(m_single_values.data(), L.xsize * sizeof(Single));
     }
     m_single_view = supernodal_view(L, m_single_values.data());
-    const Eigen::SparseMatrix<Single> lower_in_single = lower.cast<Single>();
+    const Eigen::SparseMatrix<Single> lower_in_single = with_values_in_precision<Single>(lower);
     if(supernodal_factorize(m_single_view, m_single_values.data(), lower_in_single, *m_updates, *m_plan) >= 0)
     {
       release_single_precision_factor();

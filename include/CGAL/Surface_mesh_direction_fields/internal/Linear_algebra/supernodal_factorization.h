@@ -19,6 +19,8 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <atomic>
 #include <complex>
@@ -69,6 +71,23 @@ Complex_sparse_matrix permuted_lower_triangle(const Complex_sparse_matrix& lower
   Complex_sparse_matrix permuted(n, n);
   permuted.selfadjointView<Eigen::Lower>() = lower.selfadjointView<Eigen::Lower>().twistedBy(to_permuted);
   return permuted;
+}
+
+// The same matrix with its entries in another precision, pattern copied as
+// it is. (Eigen's cast<>() rebuilds the matrix by ordered insertion, which
+// asserts that the rows of each column are sorted: those of the symmetric
+// permutation above are not, so it aborts in every build with assertions.)
+template <typename Scalar>
+Eigen::SparseMatrix<Scalar> with_values_in_precision(const Complex_sparse_matrix& S)
+{
+  CGAL_precondition(S.isCompressed());
+  Eigen::SparseMatrix<Scalar> T(S.rows(), S.cols());
+  T.resizeNonZeros(S.nonZeros());
+  std::copy(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1, T.outerIndexPtr());
+  std::copy(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros(), T.innerIndexPtr());
+  std::transform(S.valuePtr(), S.valuePtr() + S.nonZeros(), T.valuePtr(),
+                 [](const Complex& z) { return static_cast<Scalar>(z); });
+  return T;
 }
 
 // For each supernode s, the supernodes that update it: the descendants d
