@@ -32,6 +32,7 @@ struct Options
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
   std::string align = "none", guidance, constrain_boundary = "none";
+  std::string prescribe;  // --prescribe: 'f k' lines, the singular faces to place
   bool lambda_given = false, weight_given = false;
   double lambda = 0., weight = 0.5;
   bool eigenvalue_bound = false;
@@ -68,6 +69,11 @@ inline const Option_help option_help[] = {
   {"Field", "--seed N", "the seed of the random start vector of the eigen-solve (default 0)"},
   {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
   {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
+  {"Field", "--prescribe FILE", "place the singularities: one 'f k' per singular face of MESH (index k/n; the "
+                                  "format --singularities writes; faces not listed have index 0). The field is then "
+                                  "the parallel one with exactly these singular faces (s has no effect; --align, "
+                                  "--guidance or one constrained direction choose its rotation). On a closed mesh "
+                                  "the k must add up to n times the Euler characteristic"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
                                 "follow the principal curvature directions (even n)"},
   {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
@@ -114,7 +120,7 @@ inline const char* const usage =
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
   "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
   "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--solver default|petsc]\n"
-  "                       [--petsc-options TEXT] [--distribute-from N]\n"
+  "                       [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -213,6 +219,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--tolerance") o.tolerance = parse_number<double>(a, v);
   else if(a == "--align") o.align = v;
   else if(a == "--guidance") o.guidance = v;
+  else if(a == "--prescribe") o.prescribe = v;
   else if(a == "--lambda") { o.lambda = parse_number<double>(a, v); o.lambda_given = true; }
   else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, v); o.weight_given = true; }
   else if(a == "--constrain-boundary") o.constrain_boundary = v;
@@ -223,6 +230,18 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--distribute-from") { o.distribute_from = parse_count(a, v); o.distribute_from_given = true; }
   else return false;
   return true;
+}
+
+// --prescribe and what does not combine with it: the field solves no
+// eigenproblem and no aligned system, on one process.
+inline void check_prescription_options(const Options& o)
+{
+  if(o.prescribe.empty()) return;
+  if(o.lambda_given || o.weight_given)
+    throw Usage_error(std::string(o.lambda_given ? "--lambda" : "--alignment-weight") +
+                      " does not apply to --prescribe (the alignment only chooses the field's rotation)");
+  if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound does not apply to --prescribe");
+  if(o.solver != "default") throw Usage_error("--prescribe runs on one process: no --solver " + o.solver);
 }
 
 // The values that are words, and the combinations of options.
@@ -252,6 +271,7 @@ inline void check_options(const Options& o)
   if((o.lambda_given || o.weight_given) && o.align == "none" && o.guidance.empty())
     throw Usage_error(std::string(o.lambda_given ? "--lambda" : "--alignment-weight") +
                       " needs something to align to (--align or --guidance)");
+  check_prescription_options(o);
   if((!o.rosy.empty() || !o.ffield.empty()) && o.degree != 4)
     throw Usage_error(std::string(o.rosy.empty() ? "--ffield" : "--rosy") +
                       " describes cross fields (n = 4) only, as vcglib and QuadWild read them; n is " +

@@ -94,6 +94,45 @@ std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>&
   return guidance;
 }
 
+// --prescribe: 'f k' per line, f a face of the file, k an integer (blank
+// lines skipped), each face once; a polygon's k goes to its first triangle.
+// Returns the (face, k) of the repaired mesh.
+std::vector<std::pair<Face_index, int> > read_prescription(const Options& o, const Repaired_mesh<Mesh>& input)
+{
+  std::ifstream in(o.prescribe);
+  if(!in) throw Usage_error("cannot open '" + o.prescribe + "'");
+  std::vector<Face_index> first_triangle(input.file_faces, Face_index());
+  for(Face_index f : input.mesh.faces())
+  {
+    Face_index& first = first_triangle[input.file_face_of_face[std::size_t(f)]];
+    if(first == Face_index()) first = f;
+  }
+  std::map<std::size_t, int> k_of_file_face;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number)
+  {
+    if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream is(line);
+    long long f, k;
+    std::string rest;
+    const std::string where = "line " + std::to_string(number) + " of '" + o.prescribe + "'";
+    if(!(is >> f >> k) || (is >> rest))
+      throw Usage_error(where + " is not two integers 'f k'");
+    if(f < 0 || static_cast<unsigned long long>(f) >= input.file_faces)
+      throw Usage_error(where + ": face " + std::to_string(f) + " is not a face of the mesh (it has " +
+                        std::to_string(input.file_faces) + ")");
+    if(k < -1000000 || k > 1000000) throw Usage_error(where + ": index " + std::to_string(k) + " is out of range");
+    if(!k_of_file_face.emplace(std::size_t(f), int(k)).second)
+      throw Usage_error(where + ": face " + std::to_string(f) + " is listed twice");
+    if(k != 0 && first_triangle[std::size_t(f)] == Face_index())
+      throw Usage_error(where + ": face " + std::to_string(f) + " was removed by the repair (degenerate or repeated)");
+  }
+  std::vector<std::pair<Face_index, int> > prescription;
+  for(const auto& fk : k_of_file_face)
+    if(fk.second != 0) prescription.emplace_back(first_triangle[fk.first], fk.second);
+  return prescription;
+}
+
 // --solver petsc: MPI, PETSc and SLEPc for the whole run. The first process
 // runs the program; the others serve its requests (assembly and solves of the
 // large components) until it has computed the field, then return.
@@ -190,9 +229,15 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
     (void)processes;
     return with_features(np);
   };
+  const std::vector<std::pair<Face_index, int> > prescription =
+    o.prescribe.empty() ? std::vector<std::pair<Face_index, int> >() : read_prescription(o, input);
+  auto with_prescription = [&](auto np) {
+    if(o.prescribe.empty()) return with_solver(np);
+    return with_features(np.prescribed_singularities(prescription));  // one process (checked)
+  };
   auto with_guidance = [&](auto np) {
-    if(o.guidance.empty()) return with_solver(np);
-    return with_solver(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
+    if(o.guidance.empty()) return with_prescription(np);
+    return with_prescription(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
   };
   // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
   field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))
@@ -259,9 +304,11 @@ void register_outputs(const Options& o, Output_files& outputs)
     {"--png", &o.png}, {"--vtk", &o.vtk}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
     {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out}};
   for(const auto& p : paths) outputs.add(p.first, *p.second, o.mesh);
-  if(!o.guidance.empty())
-    for(const auto& p : paths)
-      if(*p.second == o.guidance) throw Usage_error(std::string(p.first) + " would overwrite the --guidance file");
+  for(const auto& input : {std::make_pair("--guidance", &o.guidance), std::make_pair("--prescribe", &o.prescribe)})
+    if(!input.second->empty())
+      for(const auto& p : paths)
+        if(*p.second == *input.second)
+          throw Usage_error(std::string(p.first) + " would overwrite the " + input.first + " file");
 }
 
 // What the computation did, on stderr while running; a solve that stopped
@@ -270,8 +317,9 @@ void report_computation(const Progress& progress, const SMDF::Direction_field_re
 {
   std::ostringstream line;
   line << "setup " << compact(r.timings.setup_ms) << " ms, factorization " << compact(r.timings.factorization_ms)
-       << " ms, solve " << compact(r.timings.solve_ms) << " ms: " << r.iterations << " iterations, residual "
-       << compact(r.residual);
+       << " ms, solve " << compact(r.timings.solve_ms) << " ms: ";
+  if(r.prescribed) line << "prescribed singularities, holonomy error " << compact(r.holonomy_error);
+  else line << r.iterations << " iterations, residual " << compact(r.residual);
   progress.say(line.str());
   if(!r.converged)
     std::cerr << "direction_field: warning: the eigen-solve stopped after " << r.iterations

@@ -73,6 +73,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
      << ",\"mollification\":" << number(r.mollification)
+     << ",\"prescribed\":" << (r.prescribed ? "true" : "false") << ",\"holonomy_error\":" << number(r.holonomy_error)
      << ",\"lambda\":" << number(main_component(r).lambda)
      << ",\"alignment_weight\":" << number(main_component(r).alignment_weight)
      << ",\"eigenvalue_bound\":" << number(main_component(r).eigenvalue)
@@ -115,6 +116,9 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
     if(!std::isnan(main_component(r).eigenvalue)) os << " (bound lambda_1 = " << main_component(r).eigenvalue << ")";
     os << ", alignment weight t = " << main_component(r).alignment_weight << "\n";
   }
+  if(r.prescribed)
+    os << "prescribed      the singular faces of " << o.prescribe << " (parallel field, holonomy error "
+       << r.holonomy_error << " rad)\n";
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)

@@ -117,6 +117,12 @@ struct Direction_field_result
   bool converged = true;
   /// the length added to every edge by the intrinsic mollification (0 if the mesh needed none)
   double mollification = 0.;
+  /// `true` if the singularities were prescribed (named parameter `prescribed_singularities`)
+  bool prescribed = false;
+  /// for prescribed singularities: the largest error, in radians, of the adjusted connection's holonomy
+  /// around a face (against \f$ 2\pi k \f$) or around a loop of the cycle basis (against a multiple
+  /// of \f$ 2\pi \f$), after the change of the connection; 0 otherwise
+  double holonomy_error = 0.;
   /// wall-clock times
   Direction_field_timings timings;
 };

@@ -33,6 +33,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/mass_operator.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 // the linear algebra: factorizations, the eigen-solve, the linear solves
@@ -177,6 +178,7 @@ public:
     const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
     m_tmesh = &tmesh;
     m_index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
+    m_index_of_face = [fim](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
     const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
     if(!(mollification >= 0.) || !std::isfinite(mollification))
       throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
@@ -242,6 +244,8 @@ public:
     result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
     internal::check_field_parameters(result.degree, result.smoothness_parameter);
     result.mollification = m_tangent_spaces.mollification;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
+      return compute_prescribed(vertex_direction_map, np, std::move(result), start);
     const internal::Eigen_solve_options options = eigen_solve_options(np, result.smoothness_parameter);
 
     // A solver given as a named parameter is used for this call only, without reuse.
@@ -324,6 +328,156 @@ private:
     internal::Vertex_constraints constraints;
     internal::Alignment_request alignment;
   };
+
+  // compute() with prescribed singularities (manual, "Placing Singularities"):
+  // the least change of the connection that makes it flat with the given
+  // holonomies, then its parallel section, rotated per component to follow
+  // the guidance or a constrained vertex.
+  template <typename VertexDirectionMap, typename NamedParameters>
+  Direction_field_result compute_prescribed(VertexDirectionMap vertex_direction_map, const NamedParameters& np,
+                                            Direction_field_result result, Clock::time_point start)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    Field_requests requests = read_field_requests(np, result.degree);
+    refuse_with_prescription(np, requests);
+    update_connection(result.degree);
+    result.timings.setup_ms = milliseconds_since(start);
+    if(!m_adjustment)  // once per mesh: the cycle basis and the factored face Laplacian
+    {
+      const auto factor_start = Clock::now();
+      m_adjustment = std::make_unique<internal::Connection_adjustment>(m_mesh, m_tangent_spaces, m_components);
+      result.timings.factorization_ms = milliseconds_since(factor_start);
+    }
+    const std::vector<int> k = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities));
+    result.components.resize(m_components.list.size());
+    for(std::size_t c = 0; c < m_components.list.size(); ++c)
+    {
+      internal::describe_component(m_mesh, m_components.list[c], result.components[c]);
+      result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
+      result.components[c].converged = true;
+    }
+    internal::check_prescription(m_components, m_connection, result.components, k);
+
+    if(m_transport_angles_degree != result.degree)
+    {
+      m_transport_angles = m_adjustment->transport_angles(m_connection);
+      m_transport_angles_degree = result.degree;
+    }
+    const Eigen::VectorXd& rho = m_transport_angles;
+    const Eigen::VectorXd x = m_adjustment->solve(m_mesh, m_connection, rho, k);
+    result.prescribed = true;
+    result.holonomy_error = m_adjustment->holonomy_error(m_connection, rho, x, k);
+    std::vector<Complex> u = internal::parallel_section(m_adjustment->cycle_basis(), m_mesh.number_of_vertices(), rho, x);
+    SparseSolver linear_solver = choose_parameter<SparseSolver>(get_parameter(np, internal_np::sparse_linear_solver));
+    read_guidance(np, result.degree, {}, linear_solver, requests, result.timings);
+    for(std::size_t c = 0; c < m_components.list.size(); ++c) rotate_component(c, requests, u);
+    const std::vector<int> index =
+      internal::face_indices_with_edge_angles(m_mesh, m_connection, m_adjustment->edges(), rho, u);
+    check_prescribed_indices(index, k);
+    report_indices(index, choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
+                                           CGAL::Emptyset_iterator()),
+                   result);
+    write_directions(u, result.degree, requests.constraints, vertex_direction_map, result);
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
+    {
+      std::vector<double> magnitudes(u.size());
+      for(std::size_t v = 0; v < u.size(); ++v) magnitudes[v] = std::abs(u[v]);  // 1, 0 at isolated vertices
+      write_magnitudes(magnitudes, get_parameter(np, internal_np::vertex_magnitude_map));
+    }
+    result.timings.total_ms = milliseconds_since(start);
+    result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
+    return result;
+  }
+
+  // The requests that have no meaning for a prescribed field (it solves no
+  // eigenproblem and no aligned system).
+  template <typename NamedParameters>
+  static void refuse_with_prescription(const NamedParameters&, const Field_requests& requests)
+  {
+    if(requests.alignment.lambda_given || requests.alignment.weight_given)
+      throw Invalid_input_error("alignment_lambda and alignment_weight do not apply to prescribed singularities "
+                                "(the guidance only chooses the field's rotation)");
+    if(requests.alignment.eigenvalue_bound)
+      throw Invalid_input_error("compute_eigenvalue_bound does not apply to prescribed singularities");
+    if(!parameters::is_default_parameter<NamedParameters, internal_np::distributed_solver_t>::value)
+      throw Invalid_input_error("prescribed singularities are computed by one process: no distributed_solver");
+  }
+
+  // k per face from the user's range of (face, k); a face out of range or
+  // listed twice is an error.
+  template <typename Range>
+  std::vector<int> prescribed_indices(const Range& prescription) const
+  {
+    std::vector<int> k(m_mesh.number_of_faces(), 0);
+    std::vector<unsigned char> listed(k.size(), 0);
+    for(const auto& entry : prescription)
+    {
+      const std::size_t f = m_index_of_face(entry.first);
+      if(f >= k.size())
+        throw Invalid_input_error("prescribed_singularities names face " + std::to_string(f) + ", but the mesh has " +
+                                  std::to_string(k.size()) + " faces");
+      if(listed[f]++)
+        throw Invalid_input_error("prescribed_singularities lists face " + std::to_string(f) + " twice");
+      k[f] = static_cast<int>(entry.second);
+    }
+    return k;
+  }
+
+  // The rotation of component c's parallel field: by its first constrained
+  // vertex (the others must agree), or the one that best follows the
+  // guidance (the angle of sum_v area_v q_v conj(u_v)).
+  void rotate_component(std::size_t c, const Field_requests& requests, std::vector<Complex>& u) const
+  {
+    const internal::Component& comp = m_components.list[c];
+    const internal::Vertex_constraints& constraints = requests.constraints;
+    Complex rotation(0., 0.);
+    for(std::size_t v : comp.vertices)
+      if(!constraints.is_constrained.empty() && constraints.is_constrained[v])
+      {
+        if(rotation == Complex(0., 0.))
+          rotation = constraints.values[v] / u[v];
+        else
+          check_constraint_agrees(v, constraints.values[v], rotation * u[v]);
+      }
+    if(rotation == Complex(0., 0.) && !requests.guidance.empty())
+      for(std::size_t v : comp.vertices)
+      {
+        double area = 0.;
+        for(std::size_t corner : m_mesh.fan(v)) area += m_tangent_spaces.face_area[corner / 3];
+        rotation += area * requests.guidance[v] * std::conj(u[v]);
+      }
+    if(!(std::abs(rotation) > 0.) || !std::isfinite(std::abs(rotation))) return;
+    rotation /= std::abs(rotation);
+    for(std::size_t v : comp.vertices) u[v] *= rotation;
+  }
+
+  static void check_constraint_agrees(std::size_t v, Complex wanted, Complex found)
+  {
+    const double degrees = std::abs(std::arg(wanted / found)) * 180. / CGAL_PI;
+    if(degrees > 1e-6)
+      throw Invalid_input_error("constrained vertex " + std::to_string(v) + " differs from the prescribed field by " +
+                                internal::compact_number(degrees) +
+                                " degrees (in the n-th power): with prescribed singularities only one constrained "
+                                "vertex per component fixes the rotation, the others must agree with it");
+  }
+
+  // The indices of the parallel field are the prescribed ones unless some
+  // |x_e| reached pi: then the prescription asks more of an edge than a field
+  // on the vertices can show (singularities in neighbouring faces, or a
+  // vertex whose angle defect times n is a full turn or more, as at the
+  // corners of a cube, made singularity-free).
+  static void check_prescribed_indices(const std::vector<int>& index, const std::vector<int>& k)
+  {
+    for(std::size_t f = 0; f < k.size(); ++f)
+      if(index[f] != k[f])
+        throw Invalid_input_error("no field on the vertices of this mesh has these singularities: face " +
+                                  std::to_string(f) + " would have index " + std::to_string(index[f]) + " instead of " +
+                                  std::to_string(k[f]) +
+                                  " (the connection would turn by more than pi along an edge: singularities too close "
+                                  "together, or curvature concentrated in a vertex; spread them or refine the mesh)");
+  }
 
   static double milliseconds_since(Clock::time_point start)
   {
@@ -653,7 +807,12 @@ private:
   void report_singularities(const std::vector<Complex>& u, SingularityOutputIterator out,
                             Direction_field_result& result) const
   {
-    const std::vector<int> index = internal::face_indices(m_mesh, m_connection, u);
+    report_indices(internal::face_indices(m_mesh, m_connection, u), out, result);
+  }
+
+  template <typename SingularityOutputIterator>
+  void report_indices(const std::vector<int>& index, SingularityOutputIterator out, Direction_field_result& result) const
+  {
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
     {
       Component_report& report = result.components[m_components.component_of_face[f]];
@@ -713,13 +872,19 @@ private:
     return shifts;
   }
 
-  void update_matrices(int degree, double s, const std::vector<double>& shifts = {})
+  // The connection of degree n (the matrices, if any, are then outdated).
+  void update_connection(int degree)
   {
-    if(!(m_has_matrices && degree == m_degree))
+    if(m_connection.transport.empty() || m_connection.degree != degree)
     {
       m_connection = internal::compute_connection(m_mesh, m_tangent_spaces, degree);
       m_has_matrices = false;
     }
+  }
+
+  void update_matrices(int degree, double s, const std::vector<double>& shifts = {})
+  {
+    update_connection(degree);
     if(!(m_has_matrices && s == m_s))
     {
       m_matrices.clear();  // free the old matrices before building the new ones
@@ -839,6 +1004,7 @@ private:
   GeomTraits m_traits;
   const TriangleMesh* m_tmesh = nullptr;
   std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;  // the vertex index map of the construction
+  std::function<std::size_t(face_descriptor)> m_index_of_face;      // its face index map
   internal::Indexed_mesh m_mesh;
   internal::Tangent_spaces m_tangent_spaces;
   internal::Components m_components;
@@ -861,6 +1027,10 @@ private:
   std::vector<std::unique_ptr<Component_factorization> > m_factorizations;
   std::unique_ptr<Component_factorization> m_user_solver;
   const internal::Distributed_backend* m_distributed = nullptr;  // during a call with `distributed_solver`
+  // for prescribed singularities: the cycle basis and the factored face Laplacian, made once per mesh
+  std::unique_ptr<internal::Connection_adjustment> m_adjustment;
+  Eigen::VectorXd m_transport_angles;  // rho_e of the connection of degree m_transport_angles_degree, per edge
+  int m_transport_angles_degree = 0;
 };
 
 } // namespace Surface_mesh_direction_fields

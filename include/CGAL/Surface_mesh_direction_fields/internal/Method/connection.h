@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/cycles.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
@@ -53,10 +54,7 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
   con.transport.resize(3 * nf);
   con.holonomy.resize(nf);
   const double n = static_cast<double>(degree);
-  auto is_computed_side = [&m](std::size_t ci) {
-    const std::size_t twin = m.twin_corner[ci];
-    return twin == no_index || ci < twin || m.twin_corner[twin] != ci;
-  };
+  auto is_computed_side = [&m](std::size_t ci) { return is_representative_side(m, ci); };
   parallel_for_each_index(nf, [&](std::size_t f) {
     for(int c = 0; c < 3; ++c)
     {

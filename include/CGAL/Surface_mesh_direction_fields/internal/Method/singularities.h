@@ -45,25 +45,34 @@ namespace internal {
 // omega_ji = -omega_ij holds exactly across an interior edge (r_ji =
 // conj(r_ij) exactly, so rho_ji = -rho_ij), which is what makes the indices
 // of a closed component sum to n chi.
-inline int face_index(const Indexed_mesh& m, const Connection& con, const std::vector<double>& theta, std::size_t f)
+// `rho(ci)` is the transport angle rho_ij of corner ci's side.
+template <typename CornerAngle>
+int face_index(const Indexed_mesh& m, const std::vector<double>& holonomy, const CornerAngle& rho,
+               const std::vector<double>& theta, std::size_t f)
 {
-  double total = con.holonomy[f];
+  double total = holonomy[f];
   for(int c = 0; c < 3; ++c)
-  {
-    const double rho = std::arg(con.transport[3 * f + c]);
-    total += reduce_angle(theta[m.faces[f][(c + 1) % 3]] - theta[m.faces[f][c]] - rho);
-  }
+    total += reduce_angle(theta[m.faces[f][(c + 1) % 3]] - theta[m.faces[f][c]] - rho(3 * f + c));
   return static_cast<int>(std::lround(total / (2. * CGAL_PI)));
 }
 
-inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& con,
-                                     const std::vector<std::complex<double> >& u)
+template <typename CornerAngle>
+std::vector<int> face_indices(const Indexed_mesh& m, const std::vector<double>& holonomy, const CornerAngle& rho,
+                              const std::vector<std::complex<double> >& u)
 {
   std::vector<double> theta(u.size());
   parallel_for_each_index(u.size(), [&](std::size_t v) { theta[v] = std::arg(u[v]); });  // arg(0) = 0
   std::vector<int> index(m.number_of_faces());
-  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { index[f] = face_index(m, con, theta, f); });
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { index[f] = face_index(m, holonomy, rho, theta, f); });
   return index;
+}
+
+// With the angles of the connection's transports (conjugate across an edge,
+// so that rho_ji = -rho_ij).
+inline std::vector<int> face_indices(const Indexed_mesh& m, const Connection& con,
+                                     const std::vector<std::complex<double> >& u)
+{
+  return face_indices(m, con.holonomy, [&con](std::size_t ci) { return std::arg(con.transport[ci]); }, u);
 }
 
 } // namespace internal
