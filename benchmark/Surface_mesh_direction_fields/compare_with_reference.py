@@ -2,7 +2,7 @@
 """Runs the package and the paper's reference implementation (fieldgen) on the
 same meshes, interleaved, and prints their times and peak memory as ratios.
 
-    compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] [--warm K] MESH.off...
+    compare_with_reference.py [--anchors DIR] [--reps R] [--degree N] [--warm K] [--benchmark BIN]... MESH.off...
 
 DIR holds the drivers built by ../shared/tools/reference_implementations/
 build_anchors.sh (default: $ANCHORS, else "anchors" in the temporary directory,
@@ -18,6 +18,11 @@ Both use the same CHOLMOD and OpenBLAS, and the same environment. Each run
 is a fresh process (cold: on virtual machines whose page faults are
 expensive this weighs on both); --warm K repeats the computation K times in
 each process instead (fieldgen's median, the package's best of K).
+
+--benchmark BIN, given more than once (say the build of an earlier commit and
+the current one), runs each of them after fieldgen in every repetition: a
+change is measured before and after against the reference in one run, one
+row per binary (the column `package` names it).
 """
 import argparse
 import csv
@@ -55,34 +60,38 @@ def run_package(benchmark, mesh, degree, aligned, warm):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--anchors", default=os.environ.get("ANCHORS", os.path.join(tempfile.gettempdir(), "anchors")))
-    parser.add_argument("--benchmark", default=os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields"))
+    parser.add_argument("--benchmark", action="append")
     parser.add_argument("--reps", type=int, default=3)
     parser.add_argument("--degree", type=int, default=4)
     parser.add_argument("--warm", type=int, default=1)
     parser.add_argument("meshes", nargs="+")
     a = parser.parse_args()
-    for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj"), a.benchmark]:
+    a.benchmark = a.benchmark or [os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields")]
+    for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj")] + a.benchmark:
         if not os.access(tool, os.X_OK):
             sys.exit(f"compare_with_reference.py: {tool} is missing (see the docstring)")
-    print("mesh,field,reference_ms,package_ms,time_ratio,reference_peak_mb,package_peak_mb,memory_ratio,"
+    print("mesh,field,package,reference_ms,package_ms,time_ratio,reference_peak_mb,package_peak_mb,memory_ratio,"
           "reference_singular_faces,package_singular_faces")
     with tempfile.TemporaryDirectory() as tmp:
         for mesh in a.meshes:
             obj = os.path.join(tmp, os.path.basename(mesh) + ".obj")
             subprocess.run([os.path.join(a.anchors, "off2obj"), mesh, obj], check=True, capture_output=True)
-            results = {(field, who): [] for field in ("smoothest", "aligned") for who in ("reference", "package")}
+            results = {(field, who): [] for field in ("smoothest", "aligned") for who in ["reference"] + a.benchmark}
             for _ in range(a.reps):
                 for field, mode in (("smoothest", "smooth"), ("aligned", "aligned")):
                     results[(field, "reference")].append(run_fieldgen(a.anchors, obj, a.degree, mode, a.warm))
-                    results[(field, "package")].append(run_package(a.benchmark, mesh, a.degree, field == "aligned", a.warm))
+                    for binary in a.benchmark:
+                        results[(field, binary)].append(run_package(binary, mesh, a.degree, field == "aligned", a.warm))
             for field in ("smoothest", "aligned"):
-                ref, pkg = results[(field, "reference")], results[(field, "package")]
-                rt, pt = statistics.median(r[0] for r in ref), statistics.median(p[0] for p in pkg)
-                rm, pm = statistics.median(r[1] for r in ref), statistics.median(p[1] for p in pkg)
-                print(f"{os.path.basename(mesh)},{field},{rt:.1f},{pt:.1f},{pt / rt:.3f},{rm:.1f},{pm:.1f},{pm / rm:.3f},"
-                      f"{ref[0][2]},{pkg[0][2]}", flush=True)
-                print(f"  {field}: times reference {[round(r[0]) for r in ref]} package {[round(p[0]) for p in pkg]}",
-                      file=sys.stderr)
+                ref = results[(field, "reference")]
+                rt, rm = statistics.median(r[0] for r in ref), statistics.median(r[1] for r in ref)
+                for binary in a.benchmark:
+                    pkg = results[(field, binary)]
+                    pt, pm = statistics.median(p[0] for p in pkg), statistics.median(p[1] for p in pkg)
+                    print(f"{os.path.basename(mesh)},{field},{binary},{rt:.1f},{pt:.1f},{pt / rt:.3f},{rm:.1f},{pm:.1f},"
+                          f"{pm / rm:.3f},{ref[0][2]},{pkg[0][2]}", flush=True)
+                    print(f"  {field} {binary}: times reference {[round(r[0]) for r in ref]} package "
+                          f"{[round(p[0]) for p in pkg]}", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -334,6 +334,51 @@ d = json.load(open(sys.argv[1]))
 assert d["index_sum"] == 8 and d["degree"] == 4, d
 EOF2
 
+# 7b. --prescribe: the singular faces of the smoothest field, fed back, come
+# out again exactly; one of them moved to a neighbouring face moves.
+"$bin" --degree 4 --singularities "$out/smooth_sing.txt" --json > "$out/smooth.json"
+"$bin" --degree 4 --prescribe "$out/smooth_sing.txt" --singularities "$out/again_sing.txt" --json > "$out/again.json"
+check "--prescribe exits 0" test $? -eq 0
+check "--prescribe: the same singular faces" cmp -s "$out/smooth_sing.txt" "$out/again_sing.txt"
+check "--prescribe: JSON says prescribed, holonomy error tiny" python_checks "$out/smooth.json" "$out/again.json" <<'EOF2'
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert a["prescribed"] is False and a["holonomy_error"] == 0
+assert b["prescribed"] is True and 0 <= b["holonomy_error"] < 1e-9, b["holonomy_error"]
+assert b["index_sum"] == a["index_sum"] == 4 * a["euler_characteristic"]
+assert b["eigenvalues"] == [None] * b["components"]
+EOF2
+check "--prescribe: an edit moves the singularity" python_checks "$bin" "$out" <<'EOF2'
+import json, subprocess, sys
+binary, out = sys.argv[1], sys.argv[2]
+mesh = json.load(open(out + "/smooth.json"))["mesh"]
+lines = [l.split() for l in open(mesh).read().split("\n") if l.strip() and not l.startswith("#")]
+nv, nf = int(lines[1][0]), int(lines[1][1])
+faces = [tuple(map(int, l[1:4])) for l in lines[2 + nv:2 + nv + nf]]
+edges = {}
+for f, t in enumerate(faces):
+    for i in range(3):
+        edges.setdefault(frozenset((t[i], t[(i + 1) % 3])), []).append(f)
+singular = dict((int(f), int(k)) for f, k in (l.split() for l in open(out + "/smooth_sing.txt")))
+first = min(singular)
+t = faces[first]
+neighbour = next(g for i in range(3) for g in edges[frozenset((t[i], t[(i + 1) % 3]))] if g != first and g not in singular)
+singular[neighbour] = singular.pop(first)
+open(out + "/edited.txt", "w").write("".join("%d %d\n" % fk for fk in sorted(singular.items())))
+subprocess.run([binary, mesh, "--prescribe", out + "/edited.txt", "--singularities", out + "/edited_sing.txt"],
+               check=True, stdout=subprocess.DEVNULL)
+assert open(out + "/edited_sing.txt").read() == open(out + "/edited.txt").read()
+EOF2
+printf '0 1\n1 1\n2 1\n3 1\n4 1\n5 1\n6 1\n7 1\n' > "$out/oct_all.txt"
+"$bin" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --singularities "$out/oct_all_sing.txt" > /dev/null
+check "--prescribe: +1/4 on each face of the octahedron" cmp -s "$out/oct_all.txt" "$out/oct_all_sing.txt"
+printf '0 1\n1 1.5\n' > "$out/p_fraction.txt"
+printf '0 1\n99 1\n' > "$out/p_range.txt"
+printf '0 1\n3 1\n0 1\n' > "$out/p_twice.txt"
+printf '0 1 2\n' > "$out/p_three.txt"
+printf '0 1\n1 1\n' > "$out/p_seven.txt"
+: > "$out/p_empty.txt"
+
 # 8. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
 bad() {  # bad DESCRIPTION ARGS...
   local what=$1
@@ -363,6 +408,19 @@ bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.t
 bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
 bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
 bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
+bad "--prescribe: a fraction" "$out/octahedron.off" --prescribe "$out/p_fraction.txt"
+bad "--prescribe: a face out of range" "$out/octahedron.off" --prescribe "$out/p_range.txt"
+bad "--prescribe: a face twice" "$out/octahedron.off" --prescribe "$out/p_twice.txt"
+bad "--prescribe: three numbers" "$out/octahedron.off" --prescribe "$out/p_three.txt"
+bad "--prescribe: Poincare-Hopf violated" "$out/octahedron.off" --prescribe "$out/p_seven.txt"
+bad "--prescribe: nothing on a sphere" "$out/octahedron.off" --prescribe "$out/p_empty.txt"
+bad "--prescribe: missing file" "$out/octahedron.off" --prescribe "$out/no_such_prescription.txt"
+bad "--prescribe with --lambda" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --align curvature --lambda 0
+bad "--prescribe as an output" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --singularities "$out/oct_all.txt"
+grep -q "line 2 of .*p_fraction.txt" <("$bin" "$out/octahedron.off" --prescribe "$out/p_fraction.txt" 2>&1)
+check "--prescribe: the bad line is named" test $? -eq 0
+grep -q "add up to 2, but Poincare-Hopf requires n chi = 4 \* 2 = 8" <("$bin" "$out/octahedron.off" --prescribe "$out/p_seven.txt" 2>&1)
+check "--prescribe: both sums named" test $? -eq 0
 
 # 9. --help explains every option of the usage line; --version.
 "$bin" --help > "$out/help.txt"

@@ -9,7 +9,11 @@
 //  * the class reuses its factorization: a moved singularity gives the same
 //    bits as a fresh object, and the singular set follows the move;
 //  * a constrained vertex fixes the rotation exactly, a guidance field rotates
-//    the field towards itself.
+//    the field towards itself;
+//  * the cycle basis has 2g handle loops and every boundary loop (one free per
+//    component); the change meets every equation and is the least one (its
+//    weighted divergence vanishes at every vertex but the roots); scaling the
+//    mesh changes nothing.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -454,6 +458,96 @@ static void check_rotation(Test_report& report)
   report.check(refused, "two disagreeing constrained vertices are refused");
 }
 
+// The internals on a mesh: counts of the cycle basis, the equations, and the
+// optimality of the change (d0^T W^-1 x = 0 at every vertex but the roots).
+static void check_change(Test_report& report, const std::string& name, const Mesh& mesh, int n,
+                         const Prescription& p, std::size_t handles, std::size_t boundaries)
+{
+  namespace I = SMDF::internal;
+  const auto vim = get(CGAL::vertex_index, mesh);
+  const auto fim = get(CGAL::face_index, mesh);
+  const I::Indexed_mesh m = I::make_indexed_mesh(
+    mesh, [&](Vertex_index v) { return I::Vec3{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}; }, vim, fim);
+  const I::Tangent_spaces ts = I::compute_tangent_spaces(m, 1e-6);
+  const I::Components comps = I::split_into_components(m);
+  const I::Connection con = I::compute_connection(m, ts, n);
+  const I::Connection_adjustment adjustment(m, ts, comps);
+  const I::Cycle_basis& basis = adjustment.cycle_basis();
+  std::size_t free_loops = 0;
+  for(unsigned char f : basis.is_free) free_loops += f;
+  report.check(basis.handle_loops.size() == handles && basis.boundary_loops.size() == boundaries &&
+                 free_loops == (boundaries > 0 ? 1u : 0u),
+               name + ": " + std::to_string(basis.handle_loops.size()) + " handle and " +
+                 std::to_string(basis.boundary_loops.size()) + " boundary loops");
+  std::vector<int> k(m.number_of_faces(), 0);
+  for(const auto& fk : p) k[std::size_t(fk.first)] = fk.second;
+  const Eigen::VectorXd rho = adjustment.transport_angles(con);
+  const Eigen::VectorXd x = adjustment.solve(m, con, rho, k, false), below = adjustment.solve(m, con, rho, k);
+  report.check(adjustment.holonomy_error(con, rho, x, k) < 1e-10 && adjustment.holonomy_error(con, rho, below, k) < 1e-10,
+               name + ": every equation met");
+  const I::Edge_numbering& edges = adjustment.edges();
+  const Eigen::VectorXd w = I::dual_edge_weights(m, ts, edges);
+  std::vector<double> divergence(m.number_of_vertices(), 0.), scale(m.number_of_vertices(), 0.);
+  for(std::size_t e = 0; e < edges.number_of_edges(); ++e)
+  {
+    const std::size_t ci = edges.corner_of_edge[e];
+    const std::size_t tail = m.vertex_of_corner(ci), head = m.vertex_of_corner(I::Indexed_mesh::next_corner(ci));
+    const double flow = x[Eigen::Index(e)] / w[Eigen::Index(e)];
+    divergence[tail] += flow;
+    divergence[head] -= flow;
+    scale[tail] += std::abs(flow);
+    scale[head] += std::abs(flow);
+  }
+  double worst = 0.;
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+    if(basis.parent[v] != I::no_index) worst = (std::max)(worst, std::abs(divergence[v]) / (scale[v] + 1e-300));
+  report.check(worst < 1e-9, name + ": the least change (relative divergence " + std::to_string(worst) + ")");
+  report.check(below.cwiseAbs().maxCoeff() < CGAL_PI, name + ": below a half turn on every edge");
+  if(x.cwiseAbs().maxCoeff() < 0.97 * CGAL_PI) report.check(below == x, name + ": the least change kept where it is below");
+}
+
+static void check_internals(Test_report& report)
+{
+  const Mesh s = sphere(3);
+  check_change(report, "sphere", s, 4, at_points(s, cube_corners(), 1), 0, 0);
+  Mesh torus;
+  make_torus(torus, 1., 0.4, 40, 16);
+  check_change(report, "torus", torus, 4, {}, 2, 0);
+  const Mesh g2 = genus_two(6, 0);
+  check_change(report, "genus 2", g2, 4,
+               at_points(g2, {Point_3(0.5, 0, 0.5), Point_3(1.5, 0, 0.5), Point_3(2.5, 0, 0.5), Point_3(3.5, 0, 0.5),
+                              Point_3(0.5, 1, 2.5), Point_3(1.5, 1, 2.5), Point_3(2.5, 1, 2.5), Point_3(3.5, 1, 2.5)},
+                         -1),
+               4, 0);
+  Mesh cylinder;
+  make_cylinder(cylinder, 1., 2., 32, 12);
+  check_change(report, "open cylinder", cylinder, 4, at_points(cylinder, {Point_3(1, 0, 1)}, 1), 0, 2);
+  Mesh disk;
+  make_disk(disk, 12);
+  check_change(report, "disk", disk, 1, at_points(disk, {Point_3(0.3, 0.1, 0)}, 1), 0, 1);
+}
+
+// Scaling the mesh by 1e-3 or 1e3 gives the same directions.
+static void check_scale_invariance(Test_report& report)
+{
+  Mesh mesh = sphere(3);
+  const Prescription p = at_points(mesh, cube_corners(), 1);
+  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(4).prescribed_singularities(p));
+  std::vector<Vector_3> unscaled(dir.begin(), dir.end());
+  for(double factor : {1e-3, 1e3})
+  {
+    Mesh scaled = mesh;
+    for(Vertex_index v : scaled.vertices()) scaled.point(v) = CGAL::ORIGIN + factor * (mesh.point(v) - CGAL::ORIGIN);
+    auto sdir = scaled.property_map<Vertex_index, Vector_3>("v:direction").first;
+    SMDF::compute_globally_optimal_directions(scaled, sdir, params::degree(4).prescribed_singularities(p));
+    double worst = 0.;
+    std::size_t i = 0;
+    for(Vertex_index v : scaled.vertices()) worst = (std::max)(worst, std::sqrt((sdir[v] - unscaled[i++]).squared_length()));
+    report.check(worst < 1e-6, "scaled by " + std::to_string(factor) + ": the same directions (" + std::to_string(worst) + ")");
+  }
+}
+
 int main()
 {
   Test_report report("test_prescribed_singularities");
@@ -462,5 +556,7 @@ int main()
   check_errors(report);
   check_editing(report);
   check_rotation(report);
+  check_internals(report);
+  check_scale_invariance(report);
   return report.finish();
 }

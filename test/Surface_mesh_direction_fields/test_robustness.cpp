@@ -223,6 +223,32 @@ static void check_hard_mesh(Test_report& report, const std::string& name, Mesh& 
 
 static void check_hard_meshes(Test_report& report)
 {
+  { // every point on one line: no face has an area, a clear error (not a field of needles)
+    Mesh m;
+    make_icosphere(m, 2);
+    Mesh ball;
+    make_icosphere(ball, 1);
+    for(Vertex_index v : m.vertices()) m.point(v) = Point_3(m.point(v).x(), 0., 0.);
+    std::size_t offset = m.number_of_vertices();  // and a sound second component: the error names the first
+    for(Vertex_index v : ball.vertices()) m.add_vertex(ball.point(v) + Vector_3(5., 0., 0.));
+    for(Face_index f : ball.faces())
+    {
+      std::vector<Vertex_index> vs;
+      for(Vertex_index v : CGAL::vertices_around_face(ball.halfedge(f), ball)) vs.push_back(Vertex_index(Mesh::size_type(offset + std::size_t(v))));
+      m.add_face(vs);
+    }
+    auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
+    std::string message;
+    try
+    {
+      SMDF::compute_globally_optimal_directions(m, dir, CGAL::parameters::degree(4));
+    }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      message = e.what();
+    }
+    report.check(message.find("component 0 has no area") != std::string::npos, "all points on a line: " + message);
+  }
   { // a vertex moved exactly onto an edge's midpoint: a zero-area face in a closed mesh
     Mesh m;
     make_icosphere(m, 2);

@@ -47,7 +47,7 @@ struct Component_report
   bool is_closed = false;
   /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$, the upper bound of
   /// \f$ \lambda_t \f$; NaN where it was not computed: aligned and constrained fields compute it
-  /// only when they need it or `compute_eigenvalue_bound` asks for it. It scales like the
+  /// only when they need it or `compute_eigenvalue_bound` asks for it, prescribed singularities never. It scales like the
   /// inverse of an area (it is `n (1 - s) / R^2` on a round sphere of radius `R`)
   double eigenvalue = 0.;
   /// the \f$ \lambda_t \f$ of the aligned or constrained solve \f$ (A - \lambda_t M) u = M q \f$

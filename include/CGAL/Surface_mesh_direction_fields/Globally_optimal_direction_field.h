@@ -160,8 +160,9 @@ public:
 
   \tparam NamedParameters a sequence of named parameters
   \throws Invalid_input_error for an empty mesh, a non-triangle face, a non-manifold vertex, a non-finite
-          coordinate, a zero-area face while `intrinsic_mollification` is `0`, or a mesh too large for
-          32-bit indices (see `compute_globally_optimal_directions()`)
+          coordinate, a zero-area face while `intrinsic_mollification` is `0`, a component all of whose
+          faces have zero area (its points on a line), or a mesh too large for 32-bit indices (see
+          `compute_globally_optimal_directions()`)
   */
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Globally_optimal_direction_field(const TriangleMesh& tmesh,
@@ -209,6 +210,7 @@ public:
       }
     };
     internal::parallel_invoke(find_components, compute_tangent_planes);
+    internal::check_components_have_area(m_mesh, m_components, m_tangent_spaces.mollification);
     m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
 

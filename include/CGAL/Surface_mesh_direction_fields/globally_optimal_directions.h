@@ -167,6 +167,31 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                    as key type and `bool` as value type}
     \cgalParamDefault{no feature}
   \cgalParamNEnd
+  \cgalParamNBegin{prescribed_singularities}
+    \cgalParamDescription{places the singularities: the faces listed are singular with the index `k / n` given,
+                          every other face has index 0 (user manual, section "Placing Singularities"). The field is
+                          then the parallel section of the connection changed by the least amount (in the
+                          \f$ L^2 \f$ norm of the change as a 1-form) that gives every face the holonomy
+                          \f$ 2\pi k \f$, and every handle loop and every boundary loop but the longest of its
+                          component the multiple of \f$ 2\pi \f$ nearest to the surface's own; the longest
+                          boundary loop takes what the indices imply. The result is exact: the field's own indices
+                          (`singularities_output_iterator`) are the prescribed ones, face for face, and its magnitude
+                          is 1 everywhere. `s` has no effect (the parallel section has no energy for any `s`); the free
+                          rotation of each component is set by its first constrained vertex (the others must agree
+                          with it), or else to follow the guidance (`vertex_guidance_map`,
+                          `principal_curvature_alignment`) best. Refused: `alignment_lambda`, `alignment_weight`,
+                          `compute_eigenvalue_bound`, `distributed_solver`; a face listed twice or not of the mesh;
+                          indices of a closed component whose sum is not `n` times its Euler characteristic
+                          (Poincar&eacute;-Hopf); an index a triangle cannot show (about one turn at most), and
+                          prescriptions no field on the vertices can show (singularities in neighbouring faces
+                          asking more than a half turn of the field along their common edge). The class
+                          `Globally_optimal_direction_field` keeps the factorization: another prescription on the
+                          same mesh costs one sparse solve.}
+    \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%face_descriptor, int>` (what
+                   `singularities_output_iterator` writes, so that a field's singularities can be edited and
+                   given back)}
+    \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
+  \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
                           face and its integer index `k` (the field's index there is `k / n`)}
@@ -273,11 +298,12 @@ the \f$ \lambda_t \f$ used and the alignment weight reached; and the timings.
 
 \throws Invalid_input_error if `tmesh` is empty, has a non-triangle face, a non-manifold vertex or a
         non-finite coordinate, has more than 715,827,882 faces or 2,147,483,646 vertices (indices are stored in
-        32 bits), a zero-area face while `intrinsic_mollification` is `0`, if `n < 1`, if
+        32 bits), a zero-area face while `intrinsic_mollification` is `0`, a component all of whose faces
+        have zero area (its points on a line), if `n < 1`, if
         `s` is outside \f$ [-1, 1] \f$, for curvature alignment with an odd `n`, if
         \f$ \lambda_t \ge \lambda_1 \f$, if `t` is not in \f$ (0, 1) \f$ or given without guidance, if both
         \f$ \lambda_t \f$ and `t` are given, if a guidance vector is not finite, or if a constrained direction
-        is zero or normal to the surface.
+        is zero or normal to the surface, and for the prescriptions `prescribed_singularities` refuses.
         Nothing is written to the output maps then.
 \throws Solver_failure_error if the sparse solver fails to factor the shifted energy matrix.
 

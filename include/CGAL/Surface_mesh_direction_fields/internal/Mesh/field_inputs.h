@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/principal_curvatures.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
@@ -79,6 +80,31 @@ inline void describe_component(const Indexed_mesh& m, const Component& comp, Com
   report.is_closed = (border_vertices == 0);
 }
 
+
+// A component none of whose faces has an area in the embedding (every one
+// below 1e-14 times its longest side squared: all its points on a line, or
+// in one point) has no tangent plane anywhere: the mollified lengths would
+// give it an intrinsic geometry of needles that says nothing about the
+// surface. Only a mesh that needed mollification can have one, so the pass
+// runs only then.
+inline void check_components_have_area(const Indexed_mesh& m, const Components& comps, double mollification)
+{
+  if(mollification == 0.) return;
+  std::vector<unsigned char> has_area(comps.list.size(), 0);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    unsigned char& flag = has_area[comps.component_of_face[f]];
+    if(flag) continue;
+    double area = 0.;
+    const Face_geometry g = face_geometry(m, f, 0., &area);
+    flag = area > 1e-14 * (std::max)({g.squared_length[0], g.squared_length[1], g.squared_length[2]});
+  }
+  for(std::size_t c = 0; c < comps.list.size(); ++c)
+    if(!has_area[c])
+      throw Invalid_input_error("component " + std::to_string(c) + " has no area: every one of its " +
+                                std::to_string(comps.list[c].faces.size()) +
+                                " faces is degenerate (its points lie on a line)");
+}
 
 // Guidance coefficients whose largest length is far from 1 (vectors of length
 // 1e200 or 1e-200) are scaled together by a power of two to a largest length

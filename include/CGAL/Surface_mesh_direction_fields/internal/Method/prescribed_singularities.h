@@ -220,9 +220,11 @@ public:
   }
 
   // x for the face indices k (the holonomy Omega_t + sum x = 2 pi k_t in every
-  // face) and the nearest multiple of 2 pi around every other loop of the basis.
+  // face) and the nearest multiple of 2 pi around every other loop of the
+  // basis: the least one, or (`below_half_turn`) changed by a local rotation
+  // where it turns by pi or more along an edge.
   Eigen::VectorXd solve(const Indexed_mesh& m, const Connection& con, const Eigen::VectorXd& rho,
-                        const std::vector<int>& k) const
+                        const std::vector<int>& k, bool below_half_turn = true) const
   {
     const std::size_t nf = k.size();
     std::vector<double> b_node(nf + m_basis.boundary_loops.size());
@@ -233,7 +235,7 @@ public:
     for(std::size_t l = 0; l < b_handle.size(); ++l) b_handle[l] = loop_change(m_basis.handle_loops[l], rho);
     Eigen::VectorXd x = particular_change(b_node, b_handle);
     remove_gradient(m, x);
-    if(x.cwiseAbs().maxCoeff() >= largest_change) keep_within_half_turn(m, x);
+    if(below_half_turn && x.cwiseAbs().maxCoeff() >= largest_change) keep_within_half_turn(m, x);
     return x;
   }
 
