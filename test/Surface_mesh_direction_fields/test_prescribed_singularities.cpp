@@ -13,7 +13,10 @@
 //  * the cycle basis has 2g handle loops and every boundary loop (one free per
 //    component); the change meets every equation and is the least one (its
 //    weighted divergence vanishes at every vertex but the roots); scaling the
-//    mesh changes nothing.
+//    mesh changes nothing;
+//  * prescription_loops() gives closed loops of halfedges; the turns asked of a
+//    loop (prescribed_loop_turns) are what the field does there, and a free
+//    boundary loop accepts only the turns the indices imply.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -482,7 +485,7 @@ static void check_change(Test_report& report, const std::string& name, const Mes
   std::vector<int> k(m.number_of_faces(), 0);
   for(const auto& fk : p) k[std::size_t(fk.first)] = fk.second;
   const Eigen::VectorXd rho = adjustment.transport_angles(con);
-  const Eigen::VectorXd x = adjustment.solve(m, con, rho, k, false), below = adjustment.solve(m, con, rho, k);
+  const Eigen::VectorXd x = adjustment.solve(m, con, rho, k, {}, false), below = adjustment.solve(m, con, rho, k);
   report.check(adjustment.holonomy_error(con, rho, x, k) < 1e-10 && adjustment.holonomy_error(con, rho, below, k) < 1e-10,
                name + ": every equation met");
   const I::Edge_numbering& edges = adjustment.edges();
@@ -548,6 +551,113 @@ static void check_scale_invariance(Test_report& report)
   }
 }
 
+static bool closed_loop(const Mesh& mesh, const std::vector<Mesh::Halfedge_index>& loop)
+{
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    if(mesh.target(loop[i]) != mesh.source(loop[(i + 1) % loop.size()])) return false;
+  return !loop.empty();
+}
+
+// Sum of the field's rotations omega (relative to the transport) along a loop
+// of halfedges, in turns of 2 pi: computed from the outputs by the package's
+// internals (as the indices are).
+static double field_turns_along(const Mesh& mesh, int n, const std::vector<Mesh::Halfedge_index>& loop)
+{
+  namespace I = SMDF::internal;
+  const auto vim = get(CGAL::vertex_index, mesh);
+  const auto fim = get(CGAL::face_index, mesh);
+  const I::Indexed_mesh m = I::make_indexed_mesh(
+    mesh, [&](Vertex_index v) { return I::Vec3{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}; }, vim, fim);
+  const I::Tangent_spaces ts = I::compute_tangent_spaces(m, 1e-6);
+  const I::Connection con = I::compute_connection(m, ts, n);
+  const std::vector<I::Vec3> normals = I::angle_weighted_vertex_normals(m, ts);
+  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto angle_at = [&](Vertex_index v) {
+    const Vector_3 d = dir[v];
+    return std::arg(I::tangent_coefficient(m, ts, std::size_t(v), I::Vec3{d.x(), d.y(), d.z()}, n, normals[std::size_t(v)]));
+  };
+  double total = 0.;
+  for(Mesh::Halfedge_index h : loop)
+  {
+    // rho of h: from the corner of h's face (or the opposite side, conjugated)
+    const bool inside = !mesh.is_border(h);
+    const Mesh::Halfedge_index g = inside ? h : mesh.opposite(h);
+    const Face_index f = mesh.face(g);
+    int c = 0;
+    for(Mesh::Halfedge_index k = mesh.halfedge(f); k != g; k = mesh.next(k)) ++c;
+    const double rho = std::arg(con.transport[3 * std::size_t(f) + c]) * (inside ? 1. : -1.);
+    total += I::reduce_angle(angle_at(mesh.target(h)) - angle_at(mesh.source(h)) - rho);
+  }
+  return total / (2. * CGAL_PI);
+}
+
+static void check_loop_turns(Test_report& report)
+{
+  Mesh torus;
+  make_torus(torus, 1., 0.4, 48, 20);
+  torus = with_direction_map(torus);
+  auto dir = torus.property_map<Vertex_index, Vector_3>("v:direction").first;
+  SMDF::Globally_optimal_direction_field<Mesh> field(torus);
+  const auto loops = field.prescription_loops();
+  report.check(loops.size() == 2 && closed_loop(torus, loops[0]) && closed_loop(torus, loops[1]),
+               "torus: two handle loops of halfedges, each closed");
+  const Prescription none;
+  std::vector<double> turned;
+  for(int t : {0, 1, -2})
+  {
+    std::vector<std::pair<std::size_t, int> > turns = {{0, t}};
+    std::vector<std::pair<Face_index, int> > found;
+    field.compute(dir, params::degree(4).prescribed_singularities(none).prescribed_loop_turns(turns)
+                         .singularities_output_iterator(std::back_inserter(found)));
+    turned.push_back(field_turns_along(torus, 4, loops[0]));
+    report.check(found.empty(), "torus, loop 0 turned " + std::to_string(t) + " times: no singularity");
+  }
+  report.check(std::abs(turned[1] - turned[0] - 1.) < 1e-6 && std::abs(turned[2] - turned[0] + 2.) < 1e-6,
+               "torus: the field turns along loop 0 as asked (" + std::to_string(turned[0]) + ", " +
+                 std::to_string(turned[1]) + ", " + std::to_string(turned[2]) + ")");
+
+  Mesh disk;
+  make_disk(disk, 12);
+  disk = with_direction_map(disk);
+  auto ddir = disk.property_map<Vertex_index, Vector_3>("v:direction").first;
+  SMDF::Globally_optimal_direction_field<Mesh> disk_field(disk);
+  report.check(disk_field.prescription_loops().size() == 1 && closed_loop(disk, disk_field.prescription_loops()[0]),
+               "disk: one boundary loop, closed");
+  const Prescription center = at_points(disk, {Point_3(0.05, 0.02, 0)}, 1);
+  std::vector<std::pair<std::size_t, int> > one = {{0, 1}};
+  bool accepted = true, refused = false;
+  try { disk_field.compute(ddir, params::degree(4).prescribed_singularities(center).prescribed_loop_turns(one)); }
+  catch(const SMDF::Invalid_input_error&) { accepted = false; }
+  try { disk_field.compute(ddir, params::degree(4).prescribed_singularities(none).prescribed_loop_turns(one)); }
+  catch(const SMDF::Invalid_input_error& e) { refused = std::string(e.what()).find("turns 0 times") != std::string::npos; }
+  report.check(accepted && refused, "disk: the free boundary loop accepts only the turns the indices imply");
+  std::vector<std::pair<std::size_t, int> > bad = {{3, 1}};
+  refused = false;
+  try { disk_field.compute(ddir, params::degree(4).prescribed_singularities(none).prescribed_loop_turns(bad)); }
+  catch(const SMDF::Invalid_input_error& e) { refused = std::string(e.what()).find("names loop 3") != std::string::npos; }
+  report.check(refused, "a loop out of range is refused");
+
+  Mesh cylinder;
+  make_cylinder(cylinder, 1., 2., 32, 12);
+  cylinder = with_direction_map(cylinder);
+  SMDF::Globally_optimal_direction_field<Mesh> cylinder_field(cylinder);
+  const auto rims = cylinder_field.prescription_loops();
+  auto cdir = cylinder.property_map<Vertex_index, Vector_3>("v:direction").first;
+  std::vector<std::pair<Face_index, int> > found;
+  // the rims have the same length: the first is free; turning the second once turns the first back
+  std::vector<std::pair<std::size_t, int> > twist = {{1, 1}, {0, -1}};
+  accepted = true;
+  try
+  {
+    cylinder_field.compute(cdir, params::degree(4).prescribed_singularities(none).prescribed_loop_turns(twist)
+                                   .singularities_output_iterator(std::back_inserter(found)));
+  }
+  catch(const SMDF::Invalid_input_error&) { accepted = false; }
+  report.check(rims.size() == 2 && closed_loop(cylinder, rims[0]) && closed_loop(cylinder, rims[1]) && accepted &&
+                 found.empty(),
+               "open cylinder: a twist of one turn between the rims, no singularity");
+}
+
 int main()
 {
   Test_report report("test_prescribed_singularities");
@@ -558,5 +668,6 @@ int main()
   check_rotation(report);
   check_internals(report);
   check_scale_invariance(report);
+  check_loop_turns(report);
   return report.finish();
 }

@@ -127,6 +127,7 @@ class Globally_optimal_direction_field
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef std::complex<double> Complex;
   typedef std::chrono::steady_clock Clock;
 
@@ -305,6 +306,32 @@ public:
 
   /// @}
 
+  /*!
+  returns the loops around which the field's turning can be chosen when singularities are
+  prescribed (named parameter `prescribed_loop_turns`; user manual, section "Placing
+  Singularities"), each as the closed sequence of its halfedges: first the \f$ 2g \f$ loops through the
+  handles of each component of genus `g`, then every boundary loop, each along the faces' orientation
+  (the surface on its left). The longest boundary loop of each component turns as the others and the
+  indices imply. The loops depend on the mesh only; the first call computes them (and factors the
+  Laplacian that prescriptions use), later calls return them at once.
+  */
+  std::vector<std::vector<halfedge_descriptor> > prescription_loops()
+  {
+    prepare_adjustment();
+    std::vector<std::vector<halfedge_descriptor> > loops(m_adjustment->number_of_loops());
+    const internal::Edge_numbering& edges = m_adjustment->edges();
+    for(std::size_t l = 0; l < loops.size(); ++l)
+    {
+      const internal::Edge_cycle& loop = m_adjustment->loop(l);
+      for(std::size_t i = 0; i < loop.edges.size(); ++i)
+      {
+        const halfedge_descriptor h = halfedge_of_corner(edges.corner_of_edge[loop.edges[i]]);
+        loops[l].push_back(loop.signs[i] > 0 ? h : opposite(h, *m_tmesh));
+      }
+    }
+    return loops;
+  }
+
   /// \cond SKIP_IN_MANUAL
   // The time spent in the constructor, in milliseconds.
   double construction_ms() const { return m_construction_ms; }
@@ -346,13 +373,16 @@ private:
     refuse_with_prescription(np, requests);
     update_connection(result.degree);
     result.timings.setup_ms = milliseconds_since(start);
-    if(!m_adjustment)  // once per mesh: the cycle basis and the factored face Laplacian
+    if(!m_adjustment)  // once per mesh: the cycle basis and the factored vertex Laplacian
     {
       const auto factor_start = Clock::now();
-      m_adjustment = std::make_unique<internal::Connection_adjustment>(m_mesh, m_tangent_spaces, m_components);
+      prepare_adjustment();
       result.timings.factorization_ms = milliseconds_since(factor_start);
     }
     const std::vector<int> k = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities));
+    Loop_turns turns;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
+      turns = prescribed_turns(get_parameter(np, internal_np::prescribed_loop_turns));
     result.components.resize(m_components.list.size());
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
     {
@@ -368,7 +398,8 @@ private:
       m_transport_angles_degree = result.degree;
     }
     const Eigen::VectorXd& rho = m_transport_angles;
-    const Eigen::VectorXd x = m_adjustment->solve(m_mesh, m_connection, rho, k);
+    const Eigen::VectorXd x = m_adjustment->solve(m_mesh, m_connection, rho, k, turns.turns);
+    check_free_loops(rho, x, turns);
     result.prescribed = true;
     result.holonomy_error = m_adjustment->holonomy_error(m_connection, rho, x, k);
     std::vector<Complex> u = internal::parallel_section(m_adjustment->cycle_basis(), m_mesh.number_of_vertices(), rho, x);
@@ -391,6 +422,62 @@ private:
     result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     return result;
+  }
+
+  void prepare_adjustment()
+  {
+    if(!m_adjustment)
+      m_adjustment = std::make_unique<internal::Connection_adjustment>(m_mesh, m_tangent_spaces, m_components);
+  }
+
+  // The turns asked of the loops of prescription_loops() (0 where not asked).
+  struct Loop_turns
+  {
+    std::vector<int> turns;
+    std::vector<unsigned char> asked;
+  };
+
+  template <typename Range>
+  Loop_turns prescribed_turns(const Range& given) const
+  {
+    Loop_turns t;
+    t.turns.assign(m_adjustment->number_of_loops(), 0);
+    t.asked.assign(t.turns.size(), 0);
+    for(const auto& entry : given)
+    {
+      const std::size_t l = static_cast<std::size_t>(entry.first);
+      if(l >= t.turns.size())
+        throw Invalid_input_error("prescribed_loop_turns names loop " + std::to_string(l) + ", but the mesh has " +
+                                  std::to_string(t.turns.size()) + " (see prescription_loops())");
+      if(t.asked[l]++) throw Invalid_input_error("prescribed_loop_turns lists loop " + std::to_string(l) + " twice");
+      t.turns[l] = static_cast<int>(entry.second);
+    }
+    return t;
+  }
+
+  // A free boundary loop (the longest of its component) turns as the other
+  // loops and the indices imply; turns asked of it must be those.
+  void check_free_loops(const Eigen::VectorXd& rho, const Eigen::VectorXd& x, const Loop_turns& asked) const
+  {
+    for(std::size_t l = 0; l < asked.turns.size(); ++l)
+    {
+      if(!asked.asked[l] || !m_adjustment->is_free_loop(l)) continue;
+      const int found = m_adjustment->turns_of(l, rho, x);
+      if(found != asked.turns[l])
+        throw Invalid_input_error("loop " + std::to_string(l) + " (the longest boundary loop of component " +
+                                  std::to_string(m_adjustment->loop(l).component) + ") turns " +
+                                  std::to_string(found) + " times with these indices and the other loops' turns, not " +
+                                  std::to_string(asked.turns[l]) + " (the indices of a component and the turns of its "
+                                  "boundary loops add up to a fixed sum)");
+    }
+  }
+
+  // The halfedge along corner ci's side.
+  halfedge_descriptor halfedge_of_corner(std::size_t ci) const
+  {
+    halfedge_descriptor h = halfedge(m_face_of_index[internal::Indexed_mesh::face_of_corner(ci)], *m_tmesh);
+    for(std::size_t c = 0; c < ci % 3; ++c) h = next(h, *m_tmesh);
+    return h;
   }
 
   // The requests that have no meaning for a prescribed field (it solves no

@@ -219,20 +219,45 @@ public:
     return 2. * CGAL_PI * turns - reduce_angle(sum_around(loop, rho));
   }
 
-  // x for the face indices k (the holonomy Omega_t + sum x = 2 pi k_t in every
-  // face) and the nearest multiple of 2 pi around every other loop of the
-  // basis: the least one, or (`below_half_turn`) changed by a local rotation
-  // where it turns by pi or more along an edge.
-  Eigen::VectorXd solve(const Indexed_mesh& m, const Connection& con, const Eigen::VectorXd& rho,
-                        const std::vector<int>& k, bool below_half_turn = true) const
+  // The loops whose turning can be chosen: the handle loops, then the
+  // boundary loops (loop(l) for l below number_of_loops()).
+  std::size_t number_of_loops() const { return m_basis.handle_loops.size() + m_basis.boundary_loops.size(); }
+  const Edge_cycle& loop(std::size_t l) const
   {
+    const std::size_t handles = m_basis.handle_loops.size();
+    return l < handles ? m_basis.handle_loops[l] : m_basis.boundary_loops[l - handles];
+  }
+  bool is_free_loop(std::size_t l) const
+  {
+    const std::size_t handles = m_basis.handle_loops.size();
+    return l >= handles && m_basis.is_free[l - handles];
+  }
+
+  // The turns of loop l under the change x: how many times 2 pi its turning
+  // exceeds the nearest multiple (what `turns` of solve() asks of it).
+  int turns_of(std::size_t l, const Eigen::VectorXd& rho, const Eigen::VectorXd& x) const
+  {
+    return static_cast<int>(std::lround((sum_around(loop(l), x) - loop_change(loop(l), rho)) / (2. * CGAL_PI)));
+  }
+
+  // x for the face indices k (the holonomy Omega_t + sum x = 2 pi k_t in every
+  // face) and, around every other loop of the basis, the nearest multiple of
+  // 2 pi plus `turns[l]` times 2 pi (missing entries: 0; a free loop's entry
+  // is not used: it follows); the least such x, or (`below_half_turn`)
+  // changed by a local rotation where it turns by pi or more along an edge.
+  Eigen::VectorXd solve(const Indexed_mesh& m, const Connection& con, const Eigen::VectorXd& rho,
+                        const std::vector<int>& k, const std::vector<int>& turns = {},
+                        bool below_half_turn = true) const
+  {
+    auto turns_of_loop = [&turns](std::size_t l) { return l < turns.size() ? turns[l] : 0; };
     const std::size_t nf = k.size();
     std::vector<double> b_node(nf + m_basis.boundary_loops.size());
     for(std::size_t f = 0; f < nf; ++f) b_node[f] = 2. * CGAL_PI * k[f] - con.holonomy[f];
     for(std::size_t l = 0; l < m_basis.boundary_loops.size(); ++l)
-      b_node[nf + l] = loop_change(m_basis.boundary_loops[l], rho);
+      b_node[nf + l] = loop_change(m_basis.boundary_loops[l], rho, turns_of_loop(m_basis.handle_loops.size() + l));
     std::vector<double> b_handle(m_basis.handle_loops.size());
-    for(std::size_t l = 0; l < b_handle.size(); ++l) b_handle[l] = loop_change(m_basis.handle_loops[l], rho);
+    for(std::size_t l = 0; l < b_handle.size(); ++l)
+      b_handle[l] = loop_change(m_basis.handle_loops[l], rho, turns_of_loop(l));
     Eigen::VectorXd x = particular_change(b_node, b_handle);
     remove_gradient(m, x);
     if(below_half_turn && x.cwiseAbs().maxCoeff() >= largest_change) keep_within_half_turn(m, x);
