@@ -314,6 +314,7 @@ public:
   (the surface on its left). The longest boundary loop of each component turns as the others and the
   indices imply. The loops depend on the mesh only; the first call computes them (and factors the
   Laplacian that prescriptions use), later calls return them at once.
+  \returns one vector of halfedges per loop, each halfedge's target the next one's source
   */
   std::vector<std::vector<halfedge_descriptor> > prescription_loops()
   {

@@ -192,6 +192,17 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                    given back)}
     \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
   \cgalParamNEnd
+  \cgalParamNBegin{prescribed_loop_turns}
+    \cgalParamDescription{with `prescribed_singularities`: how many more times (positive or negative) than the
+                          nearest choice the field turns, by \f$ 2\pi / n \f$ each, along chosen loops of the surface:
+                          pairs `(l, t)` with `l` the position of the loop in
+                          `Globally_optimal_direction_field::prescription_loops()` (the loops through the handles, then
+                          the boundary loops). The longest boundary loop of each component takes what the indices
+                          and the other loops imply; turns asked of it must be those (otherwise the error gives
+                          both).}
+    \cgalParamType{a range of `std::pair<std::size_t, int>`}
+    \cgalParamDefault{0 for every loop: the turning nearest to the surface's own}
+  \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
                           face and its integer index `k` (the field's index there is `k / n`)}
