@@ -408,6 +408,9 @@ bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.t
 bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
 bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
 bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
+bad "--guidance ''" "$out/octahedron.off" --align curvature --guidance ""
+bad "--prescribe ''" "$out/octahedron.off" --prescribe ""
+bad "--mesh-out of a format it does not write" "$out/octahedron.off" --mesh-out "$out/m.stl"
 bad "--prescribe: a fraction" "$out/octahedron.off" --prescribe "$out/p_fraction.txt"
 bad "--prescribe: a face out of range" "$out/octahedron.off" --prescribe "$out/p_range.txt"
 bad "--prescribe: a face twice" "$out/octahedron.off" --prescribe "$out/p_twice.txt"

@@ -290,6 +290,27 @@ static void check_hard_meshes(Test_report& report)
     m.add_face(ring[0], spike, ring[1]);
     check_hard_mesh(report, "tiny and huge boundary angle sums", m, false);
   }
+  { // removed elements not collected: a clear error, never an access past the arrays
+    Mesh m;
+    make_icosphere(m, 2);
+    CGAL::Euler::remove_face(m.halfedge(Face_index(3)), m);
+    CGAL::Euler::remove_face(m.halfedge(Face_index(100)), m);
+    auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
+    std::string message;
+    try
+    {
+      SMDF::compute_globally_optimal_directions(m, dir, CGAL::parameters::degree(4));
+    }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      message = e.what();
+    }
+    report.check(message.find("collect_garbage()") != std::string::npos, "removed faces not collected: " + message);
+    m.collect_garbage();
+    auto collected = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(m, collected, CGAL::parameters::degree(4));
+    report.check(r.components.size() == 1 && !r.components[0].is_closed, "after collect_garbage(): computed");
+  }
   { // many boundary loops, several components, an isolated vertex
     Mesh m;
     make_torus(m, 2., 0.7, 40, 16);
@@ -333,9 +354,51 @@ static void check_degree_range(Test_report& report)
                "degree maximum_degree: the index sum n chi = " + std::to_string(2LL * SMDF::maximum_degree) + " exactly");
 }
 
+// Coordinates at any scale: the same singular faces and directions as the
+// unscaled mesh, the eigenvalue scaled by 1 / factor^2 (where a double holds
+// it), the mollification by factor.
+static void check_any_scale(Test_report& report)
+{
+  typedef std::vector<std::pair<Face_index, int> > Singular;
+  auto solve = [](Mesh& m, Singular& singular) {
+    auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
+    const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+      m, dir, CGAL::parameters::degree(4).singularities_output_iterator(std::back_inserter(singular)));
+    return r;
+  };
+  Mesh base;
+  make_lumpy_sphere(base, 3);
+  Singular base_singular;
+  const SMDF::Direction_field_result unscaled = solve(base, base_singular);
+  const auto base_dir = base.property_map<Vertex_index, Vector_3>("v:direction").first;
+  for(double factor : {1e-310, 1e-300, 1e-150, 1e-80, 1e80, 1e150, 1e300})
+  {
+    Mesh m = base;
+    auto old_dir = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    m.remove_property_map(old_dir);
+    for(Vertex_index v : m.vertices()) m.point(v) = CGAL::ORIGIN + factor * (base.point(v) - CGAL::ORIGIN);
+    Singular singular;
+    std::string error;
+    SMDF::Direction_field_result r;
+    try { r = solve(m, singular); }
+    catch(const std::exception& e) { error = e.what(); }
+    const std::string name = "scaled by " + std::to_string(factor);
+    if(!report.check(error.empty(), name + ": computed (" + error + ")")) continue;
+    report.check(singular == base_singular, name + ": the same singular faces");
+    const auto dir = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    double worst = 0.;
+    for(Vertex_index v : m.vertices()) worst = (std::max)(worst, std::sqrt((dir[v] - base_dir[v]).squared_length()));
+    report.check(worst < 1e-6, name + ": the same directions (" + std::to_string(worst) + ")");
+    const double expected = unscaled.components[0].eigenvalue / factor / factor;
+    if(std::isfinite(expected) && expected > 1e-290)
+      report.check(std::abs(r.components[0].eigenvalue / expected - 1.) < 1e-6, name + ": the eigenvalue scales");
+  }
+}
+
 int main()
 {
   Test_report report("robustness");
+  check_any_scale(report);
   check_degree_range(report);
   check_models(report);
   check_hard_meshes(report);

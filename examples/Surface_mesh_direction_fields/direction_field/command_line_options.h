@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -218,8 +219,11 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--max-iterations") o.max_iterations = parse_count(a, v);
   else if(a == "--tolerance") o.tolerance = parse_number<double>(a, v);
   else if(a == "--align") o.align = v;
-  else if(a == "--guidance") o.guidance = v;
-  else if(a == "--prescribe") o.prescribe = v;
+  else if(a == "--guidance" || a == "--prescribe")
+  {
+    if(v.empty()) throw Usage_error("option " + a + " expects a file name, got ''");
+    (a == "--guidance" ? o.guidance : o.prescribe) = v;
+  }
   else if(a == "--lambda") { o.lambda = parse_number<double>(a, v); o.lambda_given = true; }
   else if(a == "--alignment-weight") { o.weight = parse_number<double>(a, v); o.weight_given = true; }
   else if(a == "--constrain-boundary") o.constrain_boundary = v;
@@ -242,6 +246,18 @@ inline void check_prescription_options(const Options& o)
                       " does not apply to --prescribe (the alignment only chooses the field's rotation)");
   if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound does not apply to --prescribe");
   if(o.solver != "default") throw Usage_error("--prescribe runs on one process: no --solver " + o.solver);
+}
+
+// --mesh-out writes OFF, OBJ or PLY, chosen by the name: another name is
+// refused (checked once the outputs are known to be writable paths).
+inline void check_mesh_out_name(const Options& o)
+{
+  if(o.mesh_out.empty()) return;
+  const std::size_t dot = o.mesh_out.find_last_of("./");
+  std::string extension = dot == std::string::npos || o.mesh_out[dot] != '.' ? "" : o.mesh_out.substr(dot + 1);
+  for(char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if(extension != "off" && extension != "obj" && extension != "ply")
+    throw Usage_error("--mesh-out writes .off, .obj or .ply files, not '" + o.mesh_out + "'");
 }
 
 // The values that are words, and the combinations of options.

@@ -385,6 +385,7 @@ int main(int argc, char** argv)
     }
     Output_files outputs;
     register_outputs(o, outputs);
+    check_mesh_out_name(o);
     progress = Progress(o.quiet);
     Program_timings timings;
     progress.begin("reading " + o.mesh, timings.read);

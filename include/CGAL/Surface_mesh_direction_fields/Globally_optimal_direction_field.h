@@ -187,6 +187,7 @@ public:
 
     const internal::Point_to_array<GeomTraits> to_array{m_traits};
     m_mesh = internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
+    m_length_scale = internal::normalize_coordinates(m_mesh);
     m_vertex_of_index.resize(m_mesh.number_of_vertices());
     for(vertex_descriptor v : vertices(tmesh))
       m_vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
@@ -246,7 +247,7 @@ public:
     result.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
     result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
     internal::check_field_parameters(result.degree, result.smoothness_parameter);
-    result.mollification = m_tangent_spaces.mollification;
+    result.mollification = m_tangent_spaces.mollification / m_length_scale;
     if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
       return compute_prescribed(vertex_direction_map, np, std::move(result), start);
     const internal::Eigen_solve_options options = eigen_solve_options(np, result.smoothness_parameter);
@@ -264,6 +265,7 @@ public:
 
     // 1. the hard constraints and the alignment request (manual, "Aligned and Constrained Fields")
     Field_requests requests = read_field_requests(np, result.degree);
+    requests.alignment.lambda = eigenvalue_from_user(requests.alignment.lambda);
     const std::vector<std::size_t> early = factored_before_guidance(requests, user_solver);
 
     // 2. the connection of degree n and the matrices of (n, s), unless kept from the last call
@@ -294,6 +296,11 @@ public:
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
       write_magnitudes(field.magnitudes, get_parameter(np, internal_np::vertex_magnitude_map));
 
+    for(Component_report& report : result.components)
+    {
+      report.eigenvalue = eigenvalue_to_user(report.eigenvalue);
+      report.lambda = eigenvalue_to_user(report.lambda);
+    }
     result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     if(!m_keep_factorizations) m_factorizations.clear();
@@ -569,6 +576,12 @@ private:
                                   "together, or curvature concentrated in a vertex; spread them or refine the mesh)");
   }
 
+  // Eigenvalues and lambda_t between the user's units and those of the
+  // normalized coordinates (internal::normalize_coordinates(): lengths times
+  // m_length_scale, eigenvalues divided by its square).
+  double eigenvalue_to_user(double lambda) const { return lambda * m_length_scale * m_length_scale; }
+  double eigenvalue_from_user(double lambda) const { return lambda / m_length_scale / m_length_scale; }
+
   static double milliseconds_since(Clock::time_point start)
   {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -802,8 +815,9 @@ private:
       {
         if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, options, user_solver, report, timings);
         throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
-                                  internal::compact_number(report.eigenvalue) + " of component " + std::to_string(c) +
-                                  " (got " + internal::compact_number(lambda) + ")");
+                                  internal::compact_number(eigenvalue_to_user(report.eigenvalue)) + " of component " +
+                                  std::to_string(c) + " (got " + internal::compact_number(eigenvalue_to_user(lambda)) +
+                                  ")");
       }
     }
     report.lambda = lambda;
@@ -1095,7 +1109,8 @@ private:
   const TriangleMesh* m_tmesh = nullptr;
   std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;  // the vertex index map of the construction
   std::function<std::size_t(face_descriptor)> m_index_of_face;      // its face index map
-  internal::Indexed_mesh m_mesh;
+  internal::Indexed_mesh m_mesh;  // its coordinates times m_length_scale
+  double m_length_scale = 1.;
   internal::Tangent_spaces m_tangent_spaces;
   internal::Components m_components;
   std::vector<internal::Vec3> m_normals;

@@ -141,7 +141,55 @@ void parallel_for_each_face(const Indexed_mesh& m, const FaceBody& body)
   });
 }
 
+// Coordinates far from 1 are multiplied by a power of two (exactly: the
+// mantissas do not change) to a largest magnitude in [1, 2), and the factor
+// is returned (1 when the largest magnitude is already within 2^-100 to
+// 2^100, which leaves common meshes as they are). The method is invariant
+// under scaling, but its arithmetic is not: products of four lengths (Heron's
+// formula) overflow from lengths of about 1e77 and underflow below 1e-77.
+// What the computation reports in units of length is converted back by the
+// caller (eigenvalues scale like 1 / length^2).
+inline double normalize_coordinates(Indexed_mesh& m)
+{
+  double largest = 0.;
+  for(const auto& p : m.points)
+    for(double x : p) largest = (std::max)(largest, std::abs(x));
+  if(!(largest > 0.) || (largest >= std::ldexp(1., -100) && largest <= std::ldexp(1., 100))) return 1.;
+  const int exponent = std::ilogb(largest);
+  for(auto& p : m.points)
+    for(double& x : p) x = std::ldexp(x, -exponent);
+  return std::ldexp(1., -exponent);
+}
+
 // The steps of make_indexed_mesh(), each a pass over the mesh.
+
+// Whether `index` numbers `elements` 0, 1, ..., count - 1, each once (what
+// the flat arrays need). A CGAL::Surface_mesh with removed elements that
+// were not collected counts them in num_vertices() and num_faces() but does
+// not list them, and its built-in numbering has gaps.
+template <typename Range, typename IndexMap>
+bool numbers_densely(const Range& elements, IndexMap index, std::size_t count)
+{
+  std::vector<unsigned char> seen(count, 0);
+  std::size_t listed = 0;
+  for(auto e : elements)
+  {
+    const std::size_t i = static_cast<std::size_t>(get(index, e));
+    if(i >= count || seen[i]++) return false;
+    ++listed;
+  }
+  return listed == count;
+}
+
+template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
+void check_index_maps(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, std::size_t nv, std::size_t nf)
+{
+  const char* const advice = " (a CGAL::Surface_mesh with removed elements needs collect_garbage() first)";
+  if(!numbers_densely(vertices(tm), vim, nv))
+    throw Invalid_input_error(std::string("the vertex index map does not number the vertices 0 to |V| - 1") + advice);
+  if(!numbers_densely(faces(tm), fim, nf))
+    throw Invalid_input_error(std::string("the face index map does not number the faces 0 to |F| - 1") + advice);
+}
 
 // The coordinates of every vertex, by index; throws on a non-finite one.
 template <typename TriangleMesh, typename PointOf, typename VertexIndexMap>
@@ -315,6 +363,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
   if(nv > Compact_index::largest || nf > Compact_index::largest / 3)
     throw Invalid_input_error("the mesh is too large: at most " + std::to_string(Compact_index::largest / 3) +
                               " faces and " + std::to_string(Compact_index::largest) + " vertices");
+  check_index_maps(tm, vim, fim, nv, nf);
   Indexed_mesh m;
   copy_points(tm, point_of, vim, m);
   const std::vector<std::size_t> incident_faces = copy_triangles(tm, vim, fim, m);
