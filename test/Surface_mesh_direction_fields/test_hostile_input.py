@@ -214,6 +214,18 @@ for name in ["oct_bin.off", "oct_bin_le.ply", "oct_bin_be.ply", "oct_bin.stl"]:
         check(r.returncode in (0, 1) and (r.returncode == 0 or len(r.stderr.splitlines()) == 1),
               "truncated %s at %d: status %d %r" % (name, cut, r.returncode, r.stderr))
 
+# a word of a megabyte and terminal escape codes: quoted short and printable
+for ext, text in [("off", "OFF\n3 1 0\n" + "x" * 1000000 + " 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"),
+                  ("obj", "v " + "y" * 1000000 + " 0 0\n"), ("off", "\033[2J\033[31mEVIL\n")]:
+    r = expect_error([write("quoted." + ext, text)], "a long or escaping word in ." + ext)
+    check(r is not None and len(r.stderr) < 300 and "\033" not in r.stderr,
+          "." + ext + ": the message quotes at most a few dozen printable characters")
+# a device (no end) is refused at once
+zero = os.path.join(OUT, "zero.off")
+if not os.path.lexists(zero):
+    os.symlink("/dev/zero", zero)
+expect_error([zero], "a link to /dev/zero", "device", timeout=20)
+
 # a directory, a missing file
 expect_error([OUT], "a directory as the mesh", "directory")
 expect_error([os.path.join(OUT, "missing.off")], "a missing mesh", "cannot open")

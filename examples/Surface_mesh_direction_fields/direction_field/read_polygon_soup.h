@@ -64,13 +64,31 @@ inline std::string lower_case_extension(const std::string& path)
   return extension;
 }
 
-// The file's bytes. A regular file is read in one piece; anything else (a
-// pipe) until its end.
+// A piece of the file quoted in a message: at most `longest` characters,
+// each non-printable one (escape codes, bytes of other encodings) shown as
+// '?', so that no file can flood or drive the terminal through an error.
+inline std::string excerpt(const std::string& text, std::size_t longest = 40)
+{
+  std::string shown;
+  for(std::size_t i = 0; i < text.size() && i < longest; ++i)
+    shown += std::isprint(static_cast<unsigned char>(text[i])) ? text[i] : '?';
+  if(text.size() > longest) shown += "...";
+  return shown;
+}
+
+// The most a pipe is read for (a regular file is read at its size).
+constexpr std::size_t largest_piped_file = std::size_t(1) << 32;
+
+// The file's bytes. A regular file is read in one piece; a pipe until its
+// end, up to largest_piped_file; devices (/dev/zero, /dev/urandom: no end)
+// and sockets are refused.
 inline std::string read_whole_file(const std::string& path)
 {
   struct stat status;
   if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
   if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not a mesh file");
+  if(!S_ISREG(status.st_mode) && !S_ISFIFO(status.st_mode))
+    throw Mesh_input_error("'" + path + "' is a device or a socket, not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Mesh_input_error("cannot open '" + path + "'");
   std::string bytes;
@@ -82,7 +100,12 @@ inline std::string read_whole_file(const std::string& path)
     return bytes;
   }
   char chunk[1 << 16];
-  while(in.read(chunk, sizeof chunk) || in.gcount() > 0) bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
+  while(in.read(chunk, sizeof chunk) || in.gcount() > 0)
+  {
+    bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if(bytes.size() > largest_piped_file)
+      throw Mesh_input_error("'" + path + "' is a pipe of more than " + std::to_string(largest_piped_file) + " bytes");
+  }
   return bytes;
 }
 
@@ -154,7 +177,7 @@ public:
     if(r.ec == std::errc::result_out_of_range) fail(std::string(what) + " out of range");
     if(r.ec != std::errc() || (r.ptr != end_ && !std::isspace(static_cast<unsigned char>(*r.ptr)) && *r.ptr != '/' &&
                                *r.ptr != '#'))
-      fail(std::string("expected ") + what + ", found '" + word() + "'");
+      fail(std::string("expected ") + what + ", found '" + excerpt(word()) + "'");
     p_ = r.ptr;
     return value;
   }

@@ -81,14 +81,14 @@ inline void read_OFF(const std::string& bytes, const std::string& path, Polygon_
   if(!r.next_data()) r.fail("empty file");
   const std::string keyword = r.word();
   const std::size_t off = keyword.rfind("OFF");
-  if(off == std::string::npos || off + 3 != keyword.size()) r.fail("not an OFF file (first word '" + keyword + "')");
+  if(off == std::string::npos || off + 3 != keyword.size()) r.fail("not an OFF file (first word '" + excerpt(keyword) + "')");
   const std::string prefix = keyword.substr(0, off);
   if(prefix.find('4') != std::string::npos || prefix.find('n') != std::string::npos)
     r.fail(keyword + " (homogeneous or n-dimensional points) is not supported");
-  if(prefix.find_first_not_of("STCN") != std::string::npos) r.fail("not an OFF file (first word '" + keyword + "')");
+  if(prefix.find_first_not_of("STCN") != std::string::npos) r.fail("not an OFF file (first word '" + excerpt(keyword) + "')");
   if(!r.at_line_end() && r.peek_word() == "BINARY")
   {
-    if(!prefix.empty()) r.fail("binary " + keyword + " (with normals, colours or textures) is not supported");
+    if(!prefix.empty()) r.fail("binary " + excerpt(keyword) + " (with normals, colours or textures) is not supported");
     r.next_line();
     read_OFF_binary(bytes, path, static_cast<std::size_t>(r.position() - bytes.data()), soup);
     return;
@@ -183,7 +183,7 @@ inline PLY_property read_PLY_property(Text_reader& r)
       r.fail("a PLY list needs an integer length type");
     type = r.word();
   }
-  if(!PLY_type(type, p.size, p.kind)) r.fail("unknown PLY type '" + type + "'");
+  if(!PLY_type(type, p.size, p.kind)) r.fail("unknown PLY type '" + excerpt(type) + "'");
   p.name = r.word();
   if(p.name.empty()) r.fail("a PLY property without a name");
   return p;
@@ -202,7 +202,7 @@ inline PLY_header read_PLY_header(const std::string& bytes, const std::string& p
     {
       const std::string format = r.word();
       if(format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
-        r.fail("unknown PLY format '" + format + "'");
+        r.fail("unknown PLY format '" + excerpt(format) + "'");
       header.ascii = format == "ascii";
       header.big_endian = format == "binary_big_endian";
       format_seen = true;
@@ -228,7 +228,7 @@ inline PLY_header read_PLY_header(const std::string& bytes, const std::string& p
       return header;
     }
     else if(keyword != "comment" && keyword != "obj_info" && !keyword.empty())
-      r.fail("unexpected '" + keyword + "' in a PLY header");
+      r.fail("unexpected '" + excerpt(keyword) + "' in a PLY header");
   }
   r.fail("the PLY header has no end_header");
 }
@@ -387,7 +387,7 @@ inline void expect_word(Text_reader& r, const char* word)
 {
   r.skip_white();
   const std::string found = r.word();
-  if(found != word) r.fail(std::string("expected '") + word + "', found '" + found + "'");
+  if(found != word) r.fail(std::string("expected '") + word + "', found '" + excerpt(found) + "'");
 }
 
 // facet normal nx ny nz / outer loop / vertex x y z (three times) / endloop / endfacet
@@ -399,7 +399,7 @@ inline void read_STL_text(const std::string& bytes, const std::string& path, Pol
   {
     const std::string keyword = r.word();
     if(keyword == "solid" || keyword == "endsolid") { r.next_line(); continue; }  // and the solid's name
-    if(keyword != "facet") r.fail("expected 'facet', found '" + keyword + "'");
+    if(keyword != "facet") r.fail("expected 'facet', found '" + excerpt(keyword) + "'");
     r.next_line();  // "normal nx ny nz"
     expect_word(r, "outer");
     expect_word(r, "loop");
