@@ -125,6 +125,16 @@ VALID = {"oct.off": off_text(), "oct_bin.off": off_binary(), "oct_bin_le.ply": p
          "oct_ascii.stl": stl_text(),
          "oct.obj": "".join("v %g %g %g\n" % p for p in OCT_POINTS) +
                     "".join("f %d/1/1 %d//2 %d\n" % tuple(v + 1 for v in f) for f in OCT_FACES)}
+# the same octahedron in odd but valid spellings: byte-order marks, CR-only
+# and CRLF line ends, upper-case ASCII STL, a binary STL whose header starts
+# with "solid", or with a byte after its last triangle
+BOM = "\ufeff"
+VALID.update({"bom.obj": BOM + VALID["oct.obj"], "bom.off": BOM + VALID["oct.off"], "bom_ascii.ply": BOM.encode() + ply("ascii"),
+              "bom.stl": BOM + stl_text(), "upper.stl": stl_text().upper(), "cr.off": VALID["oct.off"].replace("\n", "\r"),
+              "cr.obj": VALID["oct.obj"].replace("\n", "\r"), "crlf.obj": VALID["oct.obj"].replace("\n", "\r\n"),
+              "cr.stl": stl_text().replace("\n", "\r"),
+              "solid_header.stl": b"solid octahedron" + stl_binary()[16:],
+              "solid_header_extra_byte.stl": b"solid octahedron" + stl_binary()[16:] + b"\n"})
 for name, data in VALID.items():
     r = run([write(name, data), "--json", "--singularities", os.path.join(OUT, name + ".sing")])
     ok = r.returncode == 0
@@ -135,6 +145,15 @@ for name, data in VALID.items():
 
 # ---------------------------------------------------------------- hostile files
 HOSTILE = {
+    "plus_minus.obj": "v +-1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    "lowest_index.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n",
+    "float_index.ply": "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 1\nproperty list uchar float vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                       "3 0 1 1e300\n",
+    "float_index_2_64.ply": "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar double vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 18446744073709551616\n",
+    "solid_header_short.stl": b"solid octahedron" + stl_binary()[16:-1],
     "property_before_element.ply": b"ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n",
     "huge_faces.off": "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
     "huge_vertices.off": "OFF\n2000000000 1 0\n0 0 0\n",

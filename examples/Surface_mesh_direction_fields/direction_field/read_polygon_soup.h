@@ -171,7 +171,11 @@ public:
   T number(const char* what)
   {
     skip_spaces();
-    if(p_ != end_ && *p_ == '+') ++p_;
+    if(p_ != end_ && *p_ == '+')  // a plus sign, alone: "+-1" is no number
+    {
+      ++p_;
+      if(p_ != end_ && (*p_ == '+' || *p_ == '-')) fail(std::string("expected ") + what + ", found '" + excerpt(word()) + "'");
+    }
     T value{};
     const std::from_chars_result r = std::from_chars(p_, end_, value);
     if(r.ec == std::errc::result_out_of_range) fail(std::string(what) + " out of range");
@@ -248,6 +252,16 @@ void check_count(const Reader& r, long long count, std::size_t bytes_each, const
            std::to_string(r.bytes_left()) + " bytes left in the file can hold");
 }
 
+// Text as the readers expect it: a leading UTF-8 byte-order mark removed,
+// and (`line_ends`) the lone carriage returns of a file that has no line
+// feed (old Mac line ends) turned into line feeds. CR LF needs nothing: a
+// carriage return counts as a space.
+inline void prepare_text(std::string& bytes, bool line_ends)
+{
+  if(bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.erase(0, 3);
+  if(line_ends && bytes.find('\n') == std::string::npos) std::replace(bytes.begin(), bytes.end(), '\r', '\n');
+}
+
 inline std::array<double, 3> finite_point(double x, double y, double z, const char* format, std::size_t index)
 {
   if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
@@ -271,7 +285,8 @@ inline Polygon_soup read_polygon_soup(const std::string& path)
   const std::string extension = sr::lower_case_extension(path);
   if(extension != "off" && extension != "obj" && extension != "ply" && extension != "stl")
     throw Mesh_input_error("'" + path + "': unknown mesh format (the name must end in .off, .obj, .ply or .stl)");
-  const std::string bytes = sr::read_whole_file(path);
+  std::string bytes = sr::read_whole_file(path);
+  if(extension != "stl") sr::prepare_text(bytes, extension != "ply");  // STL: once it is known to be ASCII
   Polygon_soup soup;
   if(extension == "off") sr::read_OFF(bytes, path, soup);
   else if(extension == "obj") sr::read_OBJ(bytes, path, soup);

@@ -111,7 +111,7 @@ inline void read_OBJ_face(Text_reader& r, Polygon_soup& soup)
     const long long index = r.number<long long>("a vertex index");
     r.skip_token();  // "/texture/normal"
     const long long count = static_cast<long long>(soup.points.size());
-    if(index == 0 || (index < 0 && -index > count)) r.fail("vertex index " + std::to_string(index) + " does not exist");
+    if(index == 0 || (index < 0 && index < -count)) r.fail("vertex index " + std::to_string(index) + " does not exist");
     soup.corners.push_back(static_cast<std::size_t>(index > 0 ? index - 1 : count + index));
   }
   soup.end_polygon();
@@ -304,7 +304,9 @@ inline void read_PLY_element(PLY_values& values, const PLY_element& e, Polygon_s
     {
       const double index = values.value(p.size, p.kind);
       if(!indices) continue;
-      if(!(index >= 0. && index == std::floor(index))) values.fail("invalid vertex index in a PLY face");
+      // an integer value, exactly (a float property may hold one), below 2^63
+      if(!(index >= 0. && index == std::floor(index) && index < 9223372036854775808.))
+        values.fail("invalid vertex index in a PLY face");
       soup.corners.push_back(static_cast<std::size_t>(index));
     }
     if(indices) soup.end_polygon();
@@ -383,11 +385,18 @@ inline void read_STL_binary(const std::string& bytes, const std::string& path, P
   }
 }
 
+inline std::string lower_case(std::string word)
+{
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return word;
+}
+
+// ASCII STL's keywords, in any case
 inline void expect_word(Text_reader& r, const char* word)
 {
   r.skip_white();
   const std::string found = r.word();
-  if(found != word) r.fail(std::string("expected '") + word + "', found '" + excerpt(found) + "'");
+  if(lower_case(found) != word) r.fail(std::string("expected '") + word + "', found '" + excerpt(found) + "'");
 }
 
 // facet normal nx ny nz / outer loop / vertex x y z (three times) / endloop / endfacet
@@ -397,7 +406,7 @@ inline void read_STL_text(const std::string& bytes, const std::string& path, Pol
   STL_points points(soup);
   for(r.skip_white(); !r.at_end(); r.skip_white())
   {
-    const std::string keyword = r.word();
+    const std::string keyword = lower_case(r.word());
     if(keyword == "solid" || keyword == "endsolid") { r.next_line(); continue; }  // and the solid's name
     if(keyword != "facet") r.fail("expected 'facet', found '" + excerpt(keyword) + "'");
     r.next_line();  // "normal nx ny nz"
@@ -416,16 +425,37 @@ inline void read_STL_text(const std::string& bytes, const std::string& path, Pol
   }
 }
 
-// Binary when the size is that of a binary file (84 + 50 bytes per triangle)
-// or the text does not start with "solid"; ASCII otherwise.
-inline void read_STL(const std::string& bytes, const std::string& path, Polygon_soup& soup)
+// Whether the bytes from `first` look like text: no control character but
+// white space in the first 4 KiB (a binary STL's triangles have zero bytes).
+inline bool looks_like_text(const std::string& bytes, std::size_t first)
+{
+  for(std::size_t i = first; i < bytes.size() && i < first + 4096; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(bytes[i]);
+    if(c < 32 && !std::isspace(c)) return false;
+  }
+  return true;
+}
+
+// Binary when the size is exactly that of a binary file (84 + 50 bytes per
+// triangle, the count at byte 80), whatever its header says; otherwise ASCII
+// when the text (after a byte-order mark) starts with "solid", in any case,
+// and looks like text; otherwise binary (a binary file whose header starts
+// with "solid" and whose size is off is read as binary: a missing byte is a
+// truncated triangle, extra bytes after the last triangle are ignored).
+inline void read_STL(std::string& bytes, const std::string& path, Polygon_soup& soup)
 {
   const std::uint32_t count = bytes.size() >= 84 ? Binary_reader(bytes, path, 80, false).get<std::uint32_t>("") : 0;
-  const std::size_t first = bytes.find_first_not_of(" \t\r\n");
-  const bool starts_with_solid = first != std::string::npos && bytes.compare(first, 5, "solid") == 0 &&
-                                 (first + 5 == bytes.size() || std::isspace(static_cast<unsigned char>(bytes[first + 5])));
   const bool binary_size = bytes.size() >= 84 && (bytes.size() - 84) / 50 == count && (bytes.size() - 84) % 50 == 0;
-  if(starts_with_solid && !binary_size) read_STL_text(bytes, path, soup);
+  const std::size_t text = bytes.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  const std::size_t first = bytes.find_first_not_of(" \t\r\n", text);
+  const bool starts_with_solid = first != std::string::npos && lower_case(bytes.substr(first, 5)) == "solid" &&
+                                 (first + 5 == bytes.size() || std::isspace(static_cast<unsigned char>(bytes[first + 5])));
+  if(!binary_size && starts_with_solid && looks_like_text(bytes, text))
+  {
+    prepare_text(bytes, true);
+    read_STL_text(bytes, path, soup);
+  }
   else if(bytes.size() < 84) throw Mesh_input_error("'" + path + "' is too short for a binary STL file");
   else read_STL_binary(bytes, path, soup);
 }
