@@ -340,4 +340,71 @@ check(None not in results and all(same_cross(u, v) for r in results[1:] for u, v
 r = run([mesh, "--align", "curvature", "--alignment-weight", "1e-300", "--json"])
 check(r.returncode == 0, "--alignment-weight 1e-300: %d %r" % (r.returncode, r.stderr))
 
+# ---------------------------------------------------------------- outputs, third round
+import signal as _signal
+import time as _time
+def leftovers(folder):
+    return [n for n in os.listdir(folder) if ".partial-" in n]
+
+work = os.path.join(OUT, "same_file")
+os.makedirs(work, exist_ok=True)
+for a, b in [("a.txt", "./a.txt"), ("a.txt", ".//a.txt"), ("a.txt", os.path.join(work, "a.txt")),
+             ("a.txt", "../same_file/a.txt")]:
+    r = subprocess.run([BIN, mesh, "--directions", a, "--singularity-list", b], cwd=work, capture_output=True,
+                       text=True, timeout=60)
+    check(r.returncode == 1 and "both write" in r.stderr and r.stderr.count("\n") == 1,
+          "one file through two spellings (%s, %s): %r" % (a, b, r.stderr))
+write("same_file/target.txt", "old\n")
+os.symlink("target.txt", os.path.join(work, "link.txt"))
+r = subprocess.run([BIN, mesh, "--directions", "target.txt", "--singularity-list", "link.txt"], cwd=work,
+                   capture_output=True, text=True, timeout=60)
+check(r.returncode == 1 and "both write" in r.stderr, "one file through a link: %r" % r.stderr)
+
+# signals whose default action ends the program: no partial file left (the mesh is a pipe not yet written)
+for sig in ["SIGQUIT", "SIGUSR1", "SIGUSR2", "SIGALRM", "SIGXCPU", "SIGVTALRM", "SIGXFSZ", "SIGTERM"]:
+    folder = os.path.join(OUT, "signal_" + sig)
+    os.makedirs(folder, exist_ok=True)
+    pipe = os.path.join(folder, "mesh.off")
+    os.mkfifo(pipe)
+    p = subprocess.Popen([BIN, pipe, "--directions", os.path.join(folder, "d.txt")], stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL)
+    for _ in range(100):  # until the output's temporary file exists
+        if leftovers(folder): break
+        _time.sleep(0.05)
+    p.send_signal(getattr(_signal, sig))
+    p.wait(timeout=20)
+    check(p.returncode != 0 and not leftovers(folder) and not os.path.exists(os.path.join(folder, "d.txt")),
+          "%s: ended (%d), no partial file (%s)" % (sig, p.returncode, leftovers(folder)))
+
+# standard output closed early (| true): an error, no file, no partial file
+folder = os.path.join(OUT, "closed_stdout")
+os.makedirs(folder, exist_ok=True)
+reader, writer = os.pipe()
+os.close(reader)
+r = subprocess.run([BIN, mesh, "--json", "--directions", os.path.join(folder, "d.txt")], stdout=writer,
+                   stderr=subprocess.PIPE, text=True, timeout=60)
+os.close(writer)
+check(r.returncode == 1 and "standard output" in r.stderr and not leftovers(folder) and
+      not os.path.exists(os.path.join(folder, "d.txt")), "a closed standard output: %d %r" % (r.returncode, r.stderr))
+
+# a rename that fails at the end (an output's name became a folder while the mesh was read): the outputs
+# already renamed are taken back, and the older files of their names are restored
+folder = os.path.join(OUT, "failing_commit")
+os.makedirs(folder, exist_ok=True)
+write("failing_commit/d.txt", "older directions\n")
+pipe = os.path.join(folder, "mesh.off")
+os.mkfifo(pipe)
+p = subprocess.Popen([BIN, pipe, "--directions", os.path.join(folder, "d.txt"), "--singularity-list",
+                      os.path.join(folder, "s.txt")], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+for _ in range(100):
+    if len(leftovers(folder)) == 2: break
+    _time.sleep(0.05)
+os.makedirs(os.path.join(folder, "s.txt", "in_the_way"))
+with open(pipe, "w") as f:
+    f.write(off_text())
+err = p.communicate(timeout=60)[1]
+check(p.returncode == 1 and open(os.path.join(folder, "d.txt")).read() == "older directions\n" and
+      not leftovers(folder) and not [n for n in os.listdir(folder) if n.endswith(".older")],
+      "a failing rename restores the older file: %d %r %s" % (p.returncode, err, os.listdir(folder)))
+
 check.finish()

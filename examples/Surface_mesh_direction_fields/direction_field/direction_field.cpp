@@ -34,6 +34,7 @@
 #include <SuiteSparse_config.h>
 #endif
 
+#include <csignal>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -373,6 +374,7 @@ int main(int argc, char** argv)
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
   SuiteSparse_config.printf_func = print_to_stderr;
 #endif
+  std::signal(SIGPIPE, SIG_IGN);  // a closed standard output is a write error (output_files.h)
   Progress progress(true);
   try
   {

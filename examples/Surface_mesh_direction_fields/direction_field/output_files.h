@@ -6,8 +6,14 @@
 //  - the temporary files are renamed to their names only when every output of
 //    the run has been written; on any failure no file of this run remains.
 // A path that exists and is not a regular file (/dev/null, /dev/stdout, a
-// pipe) is written directly, and checked the same way. A run stopped by
-// SIGINT, SIGTERM or SIGHUP removes its temporary files before it ends.
+// pipe) is written directly, and checked the same way. A run stopped by a
+// signal whose default action ends the program (INT, TERM, HUP, QUIT, XFSZ,
+// XCPU, ALRM, USR1, USR2, VTALRM) removes its temporary files before it ends
+// (the program ignores PIPE: a closed standard output is a write error).
+// Two outputs are one file when their folders resolve to the same one and
+// their names match, or when they are the same existing file (links). If a
+// rename fails while the outputs are put in place, those already renamed are
+// taken back and the older files of those names restored.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
 
@@ -50,7 +56,8 @@ inline int remember(const std::string& path)
   std::memcpy(temporary_paths[slot], path.c_str(), path.size() + 1);
   temporary_count = slot + 1;
   if(slot == 0)
-    for(int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, remove_temporaries_and_stop);
+    for(int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGXFSZ, SIGXCPU, SIGALRM, SIGUSR1, SIGUSR2, SIGVTALRM})
+      std::signal(s, remove_temporaries_and_stop);
   return slot;
 }
 
@@ -82,9 +89,16 @@ public:
     if(exists && S_ISREG(target.st_mode) && ::stat(input.c_str(), &mesh) == 0 && mesh.st_dev == target.st_dev &&
        mesh.st_ino == target.st_ino)
       throw Usage_error(option + " '" + path + "' is the input mesh, which is never overwritten");
+    const std::string key = resolved(path);
     for(const auto& f : files_)
-      if(f->path == path) throw Usage_error(f->option + " and " + option + " both write '" + path + "'");
+      if(f->path == path || f->key == key ||
+         (exists && f->exists && f->device == target.st_dev && f->inode == target.st_ino))
+        throw Usage_error(f->option + " and " + option + " both write '" + path + "'");
     std::unique_ptr<File> f(new File{option, path, exists && !S_ISREG(target.st_mode) ? path : temporary_name(path), {}});
+    f->key = key;
+    f->exists = exists;
+    f->device = exists ? target.st_dev : 0;
+    f->inode = exists ? target.st_ino : 0;
     if(f->written != f->path) f->slot = output_files_internal::remember(f->written);
     f->stream.open(f->written, std::ios::binary | std::ios::trunc);
     if(!f->stream) throw Usage_error("cannot write " + option + " '" + path + "': " + std::strerror(errno));
@@ -112,23 +126,28 @@ public:
   }
 
   // Gives every output its name; call once everything has been written.
+  // An older file of that name is kept under a second link until all are in
+  // place, so that a failure can restore it.
   void commit()
   {
     for(auto& f : files_)
       if(f->stream.is_open()) close(f->path);
+    for(auto& f : files_)
+      if(f->written != f->path) keep_older(*f);
     for(std::size_t i = 0; i < files_.size(); ++i)
     {
       File& f = *files_[i];
       if(f.written != f.path && std::rename(f.written.c_str(), f.path.c_str()) != 0)
       {
         const std::string reason = std::strerror(errno);
-        for(std::size_t j = 0; j < i; ++j)  // none of this run's files remains
-          if(files_[j]->written != files_[j]->path) std::remove(files_[j]->path.c_str());
+        for(std::size_t j = 0; j < i; ++j) take_back(*files_[j]);
+        for(auto& g : files_) drop_older(*g);
         throw Usage_error("cannot write " + f.option + " '" + f.path + "': " + reason);
       }
       f.committed = true;
       output_files_internal::forget(f.slot);
     }
+    for(auto& f : files_) drop_older(*f);
   }
 
 private:
@@ -138,7 +157,48 @@ private:
     std::ofstream stream;
     bool committed = false;
     int slot = -1;  // in output_files_internal's list of temporary files
+    std::string key;        // the path with its folder resolved
+    bool exists = false;    // the path named an existing file when added
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::string older;      // during commit(): a second link to the older file of that name
   };
+
+  // The path with its folder resolved (links, "..", "."): one key per file.
+  static std::string resolved(const std::string& path)
+  {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    char* real = ::realpath(folder.c_str(), nullptr);
+    if(!real) return path;
+    const std::string key = std::string(real) + "/" + name;
+    std::free(real);
+    return key;
+  }
+
+  void keep_older(File& f)
+  {
+    struct stat existing;
+    if(::lstat(f.path.c_str(), &existing) != 0 || !S_ISREG(existing.st_mode)) return;
+    std::string name = f.written + ".older";
+    if(::link(f.path.c_str(), name.c_str()) == 0) f.older = name;
+  }
+
+  // Undoes the rename of f: its older file back, or no file of that name.
+  void take_back(File& f)
+  {
+    if(f.written == f.path || !f.committed) return;
+    if(!f.older.empty() && std::rename(f.older.c_str(), f.path.c_str()) == 0) f.older.clear();
+    else if(f.older.empty()) std::remove(f.path.c_str());
+    f.committed = false;
+  }
+
+  void drop_older(File& f)
+  {
+    if(!f.older.empty()) ::unlink(f.older.c_str());
+    f.older.clear();
+  }
 
   File& find(const std::string& path)
   {
