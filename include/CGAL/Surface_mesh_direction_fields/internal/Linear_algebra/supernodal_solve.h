@@ -400,6 +400,33 @@ void for_each_chunk_of(Eigen::Index begin, Eigen::Index end, Eigen::Index chunk,
   });
 }
 
+// The triangular solves of one panel of a supernode's diagonal block, in
+// place, as plain loops: Eigen's solveInPlace() on std::complex<float> loads
+// the scalar through a double pointer (pset1 of its SSE complex packet), an
+// access at 4-byte alignment that UndefinedBehaviorSanitizer reports.
+// L y = b, L lower triangular:
+template <typename Block, typename Vector>
+void solve_lower_in_place(const Block& L, Vector&& y)
+{
+  for(Eigen::Index j = 0; j < L.cols(); ++j)
+  {
+    const auto yj = y[j] / L(j, j);
+    y[j] = yj;
+    for(Eigen::Index i = j + 1; i < L.rows(); ++i) y[i] -= L(i, j) * yj;
+  }
+}
+// L^* y = b, L lower triangular (L^* upper):
+template <typename Block, typename Vector>
+void solve_lower_adjoint_in_place(const Block& L, Vector&& y)
+{
+  for(Eigen::Index j = L.cols() - 1; j >= 0; --j)
+  {
+    auto sum = y[j];
+    for(Eigen::Index i = j + 1; i < L.rows(); ++i) sum -= std::conj(L(i, j)) * y[i];
+    y[j] = sum / std::conj(L(j, j));
+  }
+}
+
 template <typename Index, typename Scalar, typename Subtract>
 void forward_supernode_in_parallel(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s, Solve_vector<Scalar>& y,
                                    Solve_vector<Scalar>& scratch, const Subtract& subtract)
@@ -411,7 +438,7 @@ void forward_supernode_in_parallel(const Supernodal_factor_view<Index, Scalar>& 
   for(Eigen::Index c0 = 0; c0 < columns; c0 += panel)
   {
     const Eigen::Index w = (std::min)(panel, columns - c0);
-    block.block(c0, c0, w, w).template triangularView<Eigen::Lower>().solveInPlace(ys.segment(c0, w));
+    solve_lower_in_place(block.block(c0, c0, w, w), ys.segment(c0, w));
     const auto solved = ys.segment(c0, w);
     // rows [c0 + w, rows): the rest of the diagonal block, then the rows below
     for_each_chunk_of(c0 + w, rows, (std::max)(Eigen::Index(64), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
@@ -445,7 +472,7 @@ void backward_supernode_in_parallel(const Supernodal_factor_view<Index, Scalar>&
   for(Eigen::Index end = columns; end > 0;)
   {
     const Eigen::Index c0 = (std::max)(Eigen::Index(0), end - panel), w = end - c0;
-    block.block(c0, c0, w, w).template triangularView<Eigen::Lower>().adjoint().solveInPlace(ys.segment(c0, w));
+    solve_lower_adjoint_in_place(block.block(c0, c0, w, w), ys.segment(c0, w));
     const Solve_vector<Scalar> solved = ys.segment(c0, w);
     for_each_chunk_of(0, c0, (std::max)(Eigen::Index(1), supernode_chunk_entries / w), [&](Eigen::Index a, Eigen::Index b) {
       ys.segment(a, b - a).noalias() -= block.block(c0, a, w, b - a).adjoint() * solved;
