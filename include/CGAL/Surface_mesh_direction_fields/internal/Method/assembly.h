@@ -134,10 +134,18 @@ inline void gather_column(const Indexed_mesh& m, const Local_matrix_array& local
   }
   column.push_back({static_cast<Eigen::Index>(local_index[v]), Complex(energy_diagonal, 0.),
                     Complex(mass_diagonal, 0.)});
-  // insertion sort (a column has about 7 entries), then merge equal rows
-  for(std::size_t a = 1; a < column.size(); ++a)
-    for(std::size_t b = a; b > 0 && column[b].row < column[b - 1].row; --b)
-      std::swap(column[b], column[b - 1]);
+  // sorted by row, stably (equal rows then add up in fan order): insertion
+  // sort for the usual column of about 7 entries, a merge sort for a vertex
+  // of high valence (insertion sort is quadratic in the valence)
+  if(column.size() <= 32)
+  {
+    for(std::size_t a = 1; a < column.size(); ++a)
+      for(std::size_t b = a; b > 0 && column[b].row < column[b - 1].row; --b)
+        std::swap(column[b], column[b - 1]);
+  }
+  else
+    std::stable_sort(column.begin(), column.end(),
+                     [](const Column_entry& x, const Column_entry& y) { return x.row < y.row; });
   std::size_t last = 0;
   for(std::size_t a = 1; a < column.size(); ++a)
   {
