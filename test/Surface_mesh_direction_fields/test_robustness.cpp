@@ -221,6 +221,21 @@ static void check_hard_mesh(Test_report& report, const std::string& name, Mesh& 
   report.check(same, name + ": the mesh is not modified");
 }
 
+// The message of the Invalid_input_error a cross field of `m` throws ("" if none).
+static std::string refusal_of(Mesh& m)
+{
+  auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
+  try
+  {
+    SMDF::compute_globally_optimal_directions(m, dir, CGAL::parameters::degree(4));
+  }
+  catch(const SMDF::Invalid_input_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
 static void check_hard_meshes(Test_report& report)
 {
   { // every point on one line: no face has an area, a clear error (not a field of needles)
@@ -237,16 +252,7 @@ static void check_hard_meshes(Test_report& report)
       for(Vertex_index v : CGAL::vertices_around_face(ball.halfedge(f), ball)) vs.push_back(Vertex_index(Mesh::size_type(offset + std::size_t(v))));
       m.add_face(vs);
     }
-    auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
-    std::string message;
-    try
-    {
-      SMDF::compute_globally_optimal_directions(m, dir, CGAL::parameters::degree(4));
-    }
-    catch(const SMDF::Invalid_input_error& e)
-    {
-      message = e.what();
-    }
+    const std::string message = refusal_of(m);
     report.check(message.find("component 0 has no area") != std::string::npos, "all points on a line: " + message);
   }
   { // a vertex moved exactly onto an edge's midpoint: a zero-area face in a closed mesh
@@ -295,16 +301,7 @@ static void check_hard_meshes(Test_report& report)
     make_icosphere(m, 2);
     CGAL::Euler::remove_face(m.halfedge(Face_index(3)), m);
     CGAL::Euler::remove_face(m.halfedge(Face_index(100)), m);
-    auto dir = m.add_property_map<Vertex_index, Vector_3>("v:direction").first;
-    std::string message;
-    try
-    {
-      SMDF::compute_globally_optimal_directions(m, dir, CGAL::parameters::degree(4));
-    }
-    catch(const SMDF::Invalid_input_error& e)
-    {
-      message = e.what();
-    }
+    const std::string message = refusal_of(m);
     report.check(message.find("collect_garbage()") != std::string::npos, "removed faces not collected: " + message);
     m.collect_garbage();
     auto collected = m.property_map<Vertex_index, Vector_3>("v:direction").first;
