@@ -221,6 +221,7 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
   SMDF::Streamline_options options;
   options.seed_spacing = 0.1;
   options.maximum_length = 0.7;
+  options.minimum_separation = 0.;
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
   const std::string what = name + " (n = " + std::to_string(degree) + ")";
 
@@ -334,14 +335,15 @@ static void check_streamlines(Test_report& report, const std::string& name, cons
 // tracer compares with samples of the earlier lines every half separation,
 // the last point of a line included only through its segment's samples, so
 // half is what it guarantees).
-static void check_streamline_separation(Test_report& report, const std::string& name, const Mesh& mesh, int degree)
+// `spaced`: the options with a separation (the library's defaults have one).
+static void check_streamline_separation(Test_report& report, const std::string& name, const Mesh& mesh, int degree,
+                                        const SMDF::Streamline_options& spaced)
 {
   const SIO::Direction_field_data data = smoothest_field_data(mesh, degree);
-  SMDF::Streamline_options options;
-  options.seed_spacing = 0.05;
-  options.maximum_length = 0.5;
+  SMDF::Streamline_options options = spaced;
+  options.minimum_separation = 0.;
   const std::size_t all_lines = SMDF::trace_streamlines(data, options).size();
-  options.minimum_separation = 0.08;
+  options = spaced;
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data, options);
   const double separation = options.minimum_separation * bounding_box_diagonal(data);
   auto unit = [](const V3& a, const V3& b) {
@@ -479,8 +481,13 @@ int main()
   check_streamlines(report, "icosphere", sphere, 4, false, true);
   check_streamlines(report, "icosphere", sphere, 1, false, true);
   check_streamlines(report, "torus", torus, 2, false, false);
-  check_streamline_separation(report, "icosphere", sphere, 4);
-  check_streamline_separation(report, "torus", torus, 2);
+  SMDF::Streamline_options coarse;
+  coarse.seed_spacing = 0.05;
+  coarse.maximum_length = 0.5;
+  coarse.minimum_separation = 0.08;
+  check_streamline_separation(report, "icosphere", sphere, 4, coarse);
+  check_streamline_separation(report, "torus", torus, 2, coarse);
+  check_streamline_separation(report, "icosphere, the library's defaults", sphere, 4, SMDF::Streamline_options());
   {
     Mesh disk;
     make_disk(disk, 10);

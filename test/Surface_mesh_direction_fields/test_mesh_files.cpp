@@ -6,6 +6,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "png_snapshot.h"
 #include "read_polygon_soup.h"
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -142,5 +143,11 @@ int main()
     std::cout << "NOTICE: no shared meshes; only the generated files were compared\n";
   if(report.failed() == 0) std::filesystem::remove_all(dir);
   else std::cout << "files kept in " << dir << "\n";
+  // the picture's legend: indices as reduced fractions with their sign
+  report.check(png_snapshot::index_label(1, 1) == "+1" && png_snapshot::index_label(-1, 1) == "-1" &&
+                 png_snapshot::index_label(1, 2) == "+1/2" && png_snapshot::index_label(2, 4) == "+1/2" &&
+                 png_snapshot::index_label(-1, 4) == "-1/4" && png_snapshot::index_label(4, 4) == "+1" &&
+                 png_snapshot::index_label(-3, 6) == "-1/2",
+               "legend labels: +1, -1, +1/2, -1/4 (reduced)");
   return report.finish();
 }

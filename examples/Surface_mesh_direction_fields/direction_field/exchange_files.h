@@ -118,16 +118,6 @@ void write_mesh(const std::string& path, std::ostream& os, const Mesh& mesh)
   else CGAL::IO::write_OFF(os, mesh, np);
 }
 
-// Field lines evenly spaced (a line stops near a parallel one), seeds on a
-// grid of 2% of the bounding-box diagonal.
-inline CGAL::Surface_mesh_direction_fields::Streamline_options field_line_options()
-{
-  CGAL::Surface_mesh_direction_fields::Streamline_options options;
-  options.seed_spacing = 0.02;
-  options.maximum_length = 0.3;
-  options.minimum_separation = 0.012;
-  return options;
-}
 
 } // namespace exchange_files
 
@@ -158,7 +148,7 @@ write_exchange_files(const Options& o, const Mesh& mesh, const std::vector<Vecto
   if(!o.ffield.empty()) SMDF::IO::write_ffield(outputs.stream(o.ffield), data);
   if(!o.singularity_list.empty()) SMDF::IO::write_singularities(outputs.stream(o.singularity_list), data);
   if(o.streamlines.empty()) return streamlines;
-  streamlines = SMDF::trace_streamlines(data, exchange_files::field_line_options());
+  streamlines = SMDF::trace_streamlines(data);  // the library's defaults: evenly spaced lines
   exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), streamlines);
   return streamlines;
 }

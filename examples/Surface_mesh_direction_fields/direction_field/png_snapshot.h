@@ -16,6 +16,7 @@
 #include <ostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -351,6 +352,15 @@ inline void draw_view(const Scene& s, const View& view, double mean_edge, const 
   }
 }
 
+// The index k/n as a reduced fraction with its sign: +1, -1, +1/2, -1/4.
+inline std::string index_label(int k, int n)
+{
+  const int divisor = std::gcd(k, n);
+  const int numerator = k / divisor, denominator = n / divisor;
+  return (numerator > 0 ? "+" : "") + std::to_string(numerator) +
+         (denominator == 1 ? std::string() : "/" + std::to_string(denominator));
+}
+
 // The legend band: n, and each index present with its colour and count.
 inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
 {
@@ -365,8 +375,7 @@ inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
   for(auto it = count.rbegin(); it != count.rend() && x < canvas.w - 200; ++it)
   {
     canvas.disc(V3{x + 10., y0 + 28., 0.}, 10., index_colour(it->first));
-    const std::string label = (it->first > 0 ? "+" : "") + std::to_string(it->first) + "/" + std::to_string(s.degree) +
-                              " x" + std::to_string(it->second);
+    const std::string label = index_label(it->first, s.degree) + " x" + std::to_string(it->second);
     text(canvas, x + 28, y0 + 18, label, 3, ink);
     x += 28 + 18 * static_cast<int>(label.size()) + 30;
   }

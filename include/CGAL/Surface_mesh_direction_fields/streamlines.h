@@ -39,15 +39,15 @@ mesh's bounding box.
 struct Streamline_options
 {
   /// the distance between seeds: one seed per cell of a grid of this size, at a face barycentre
-  double seed_spacing = 0.04;
+  double seed_spacing = 0.02;
   /// the largest length of each half of a streamline (from its seed)
-  double maximum_length = 0.08;
+  double maximum_length = 0.3;
   /// the least distance between lines of the same direction family: a line
   /// stops (and a seed is skipped) closer than this to a line traced before
   /// it whose direction is within 30 degrees of its own, so that lines are
-  /// evenly spaced instead of bunching where the field converges. 0 (the
-  /// default): no limit.
-  double minimum_separation = 0.;
+  /// evenly spaced instead of bunching where the field converges; 0: no limit.
+  /// The defaults are those of the command-line program's pictures and files.
+  double minimum_separation = 0.012;
 };
 
 /*!
