@@ -72,6 +72,8 @@ void draw_direction_field(const Direction_field_data& data, const std::vector<St
 #include <CGAL/Qt/Basic_viewer_qt.h>
 #include <CGAL/Qt/init_ogl_context.h>
 
+#include <QKeyEvent>
+
 #include <cmath>
 #include <vector>
 
@@ -91,6 +93,18 @@ public:
     : Base(parent, title, false, true, true, false, false), m_data(data), m_lines(lines)
   {
     compute_elements();
+  }
+
+protected:
+  // Escape closes the window too (CGAL's viewer closes on Ctrl+Q only).
+  void keyPressEvent(QKeyEvent* e) override
+  {
+    if(e->key() == ::Qt::Key_Escape && e->modifiers() == ::Qt::NoModifier)
+    {
+      close();
+      return;
+    }
+    Base::keyPressEvent(e);
   }
 
 private:
