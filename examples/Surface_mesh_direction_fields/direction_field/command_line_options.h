@@ -6,7 +6,6 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -246,18 +245,6 @@ inline void check_prescription_options(const Options& o)
                       " does not apply to --prescribe (the alignment only chooses the field's rotation)");
   if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound does not apply to --prescribe");
   if(o.solver != "default") throw Usage_error("--prescribe runs on one process: no --solver " + o.solver);
-}
-
-// --mesh-out writes OFF, OBJ or PLY, chosen by the name: another name is
-// refused (checked once the outputs are known to be writable paths).
-inline void check_mesh_out_name(const Options& o)
-{
-  if(o.mesh_out.empty()) return;
-  const std::size_t dot = o.mesh_out.find_last_of("./");
-  std::string extension = dot == std::string::npos || o.mesh_out[dot] != '.' ? "" : o.mesh_out.substr(dot + 1);
-  for(char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if(extension != "off" && extension != "obj" && extension != "ply")
-    throw Usage_error("--mesh-out writes .off, .obj or .ply files, not '" + o.mesh_out + "'");
 }
 
 // The values that are words, and the combinations of options.

@@ -387,7 +387,7 @@ int main(int argc, char** argv)
     }
     Output_files outputs;
     register_outputs(o, outputs);
-    check_mesh_out_name(o);
+    exchange_files::check_mesh_out_name(o.mesh_out);
     progress = Progress(o.quiet);
     Program_timings timings;
     progress.begin("reading " + o.mesh, timings.read);

@@ -107,7 +107,17 @@ inline void write_streamlines(const std::string& path, std::ostream& os, const s
   else write_streamlines_text(os, lines);
 }
 
-// --mesh-out: .off (default), .obj or .ply, coordinates exact (17 digits).
+// --mesh-out writes OFF, OBJ or PLY, chosen by the name (write_mesh()):
+// another name is refused (checked once the outputs are known to be
+// writable paths).
+inline void check_mesh_out_name(const std::string& path)
+{
+  const std::string extension = soup_reading::lower_case_extension(path);
+  if(!path.empty() && extension != "off" && extension != "obj" && extension != "ply")
+    throw Usage_error("--mesh-out writes .off, .obj or .ply files, not '" + path + "'");
+}
+
+// --mesh-out: .off, .obj or .ply, coordinates exact (17 digits).
 template <typename Mesh>
 void write_mesh(const std::string& path, std::ostream& os, const Mesh& mesh)
 {

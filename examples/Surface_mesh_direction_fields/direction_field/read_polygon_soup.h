@@ -54,14 +54,17 @@ struct Polygon_soup
 
 namespace soup_reading {
 
+inline std::string lower_case(std::string word)
+{
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return word;
+}
+
 inline std::string lower_case_extension(const std::string& path)
 {
   const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
   if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string extension = path.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
+  return lower_case(path.substr(dot + 1));
 }
 
 // A piece of the file quoted in a message: at most `longest` characters,

@@ -385,12 +385,6 @@ inline void read_STL_binary(const std::string& bytes, const std::string& path, P
   }
 }
 
-inline std::string lower_case(std::string word)
-{
-  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return word;
-}
-
 // ASCII STL's keywords, in any case
 inline void expect_word(Text_reader& r, const char* word)
 {

@@ -163,47 +163,53 @@ inline double normalize_coordinates(Indexed_mesh& m)
 
 // The steps of make_indexed_mesh(), each a pass over the mesh.
 
-// Whether `index` numbers `elements` 0, 1, ..., count - 1, each once (what
-// the flat arrays need). A CGAL::Surface_mesh with removed elements that
-// were not collected counts them in num_vertices() and num_faces() but does
-// not list them, and its built-in numbering has gaps.
-template <typename Range, typename IndexMap>
-bool numbers_densely(const Range& elements, IndexMap index, std::size_t count)
+// Checks, as the copy passes read them, that an index map numbers the
+// elements 0, 1, ..., count - 1, each once (what the flat arrays need). A
+// CGAL::Surface_mesh with removed elements that were not collected counts
+// them in num_vertices() and num_faces() but does not list them, and its
+// built-in numbering has gaps.
+class Dense_numbering
 {
-  std::vector<unsigned char> seen(count, 0);
-  std::size_t listed = 0;
-  for(auto e : elements)
-  {
-    const std::size_t i = static_cast<std::size_t>(get(index, e));
-    if(i >= count || seen[i]++) return false;
-    ++listed;
-  }
-  return listed == count;
-}
+  std::vector<unsigned char> m_seen;
+  std::size_t m_listed = 0;
+  bool m_vertices;
 
-template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
-void check_index_maps(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, std::size_t nv, std::size_t nf)
-{
-  const char* const advice = " (a CGAL::Surface_mesh with removed elements needs collect_garbage() first)";
-  if(!numbers_densely(vertices(tm), vim, nv))
-    throw Invalid_input_error(std::string("the vertex index map does not number the vertices 0 to |V| - 1") + advice);
-  if(!numbers_densely(faces(tm), fim, nf))
-    throw Invalid_input_error(std::string("the face index map does not number the faces 0 to |F| - 1") + advice);
-}
+  [[noreturn]] void fail() const
+  {
+    throw Invalid_input_error(std::string(m_vertices ? "the vertex index map does not number the vertices 0 to |V| - 1"
+                                                     : "the face index map does not number the faces 0 to |F| - 1") +
+                              " (a CGAL::Surface_mesh with removed elements needs collect_garbage() first)");
+  }
+
+public:
+  Dense_numbering(std::size_t count, bool vertices) : m_seen(count, 0), m_vertices(vertices) {}
+  std::size_t operator()(std::size_t i)  // i, once checked
+  {
+    if(i >= m_seen.size() || m_seen[i]++) fail();
+    ++m_listed;
+    return i;
+  }
+  void check_complete() const
+  {
+    if(m_listed != m_seen.size()) fail();
+  }
+};
 
 // The coordinates of every vertex, by index; throws on a non-finite one.
 template <typename TriangleMesh, typename PointOf, typename VertexIndexMap>
 void copy_points(const TriangleMesh& tm, const PointOf& point_of, VertexIndexMap vim, Indexed_mesh& m)
 {
   m.points.resize(static_cast<std::size_t>(num_vertices(tm)));
+  Dense_numbering numbering(m.points.size(), true);
   for(auto v : vertices(tm))
   {
-    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    const std::size_t i = numbering(static_cast<std::size_t>(get(vim, v)));
     m.points[i] = point_of(v);
     for(double x : m.points[i])
       if(!std::isfinite(x))
         throw Invalid_input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
+  numbering.check_complete();
 }
 
 // The vertices of every face in the order of its halfedge cycle; throws on a
@@ -215,9 +221,10 @@ std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap v
   m.faces.resize(nf);
   m.twin_corner.assign(3 * nf, no_index);
   std::vector<std::size_t> incident_faces(m.points.size(), 0);
+  Dense_numbering numbering(nf, false);
   for(auto f : faces(tm))
   {
-    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    const std::size_t fi = numbering(static_cast<std::size_t>(get(fim, f)));
     auto h = halfedge(f, tm);
     if(next(next(next(h, tm), tm), tm) != h)
       throw Invalid_input_error("face " + std::to_string(fi) + " is not a triangle");
@@ -227,6 +234,7 @@ std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap v
       ++incident_faces[m.faces[fi][c]];
     }
   }
+  numbering.check_complete();
   return incident_faces;
 }
 
@@ -363,7 +371,6 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, const PointOf& point_of,
   if(nv > Compact_index::largest || nf > Compact_index::largest / 3)
     throw Invalid_input_error("the mesh is too large: at most " + std::to_string(Compact_index::largest / 3) +
                               " faces and " + std::to_string(Compact_index::largest) + " vertices");
-  check_index_maps(tm, vim, fim, nv, nf);
   Indexed_mesh m;
   copy_points(tm, point_of, vim, m);
   const std::vector<std::size_t> incident_faces = copy_triangles(tm, vim, fim, m);
