@@ -22,6 +22,10 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
 #include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -382,6 +386,7 @@ static void check_models_and_solvers(Test_report& report)
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
   std::cout << "  default solver: CHOLMOD supernodal\n";
   compare_with(CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Complex_matrix> >(), "CholmodSupernodalLLT");
+  compare_with(SMDF::Cholmod_supernodal_solver(), "Cholmod_supernodal_solver");
 #endif
   // A model of the concept that is not CGAL::Eigen_solver_traits: the generic
   // path (matrix copied, one right-hand side at a time).

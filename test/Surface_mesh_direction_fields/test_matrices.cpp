@@ -30,6 +30,9 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -44,6 +47,7 @@
 #include <complex>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -621,18 +625,18 @@ static SI::Complex_sparse_matrix grid_matrix(int g)
 // and a plan that cuts the tree into whole subtrees and a top.
 static void check_parallel_supernodal_solve(Test_report& report, int g)
 {
-  typedef Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> Llt;
-  typedef CGAL::Eigen_solver_traits<Llt> Cholmod;
+  typedef Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> Llt;  // the reference: CHOLMOD through Eigen
+  typedef SMDF::Cholmod_supernodal_solver Cholmod;
   const std::string name = "parallel supernodal solve, grid " + std::to_string(g) + " x " + std::to_string(g);
   const SI::Complex_sparse_matrix S = grid_matrix(g);
-  Cholmod traits;
-  SI::Factored_matrix<Cholmod> factored(traits);
+  Cholmod solver;
+  SI::Factored_matrix<Cholmod> factored(solver);
   factored.factor(S);
-  const cholmod_factor* L = SI::Cholmod_factor_access<Llt>::factor(traits.solver());
+  const cholmod_factor* L = solver.factorization().factor();
   report.check(L != nullptr && L->is_super && L->is_ll, name + ": CHOLMOD's factor is supernodal LL^*");
   if(L == nullptr || !L->is_super) return;
 
-  const SI::Supernodal_factor_view<int> view = SI::supernodal_view(*L);
+  const SI::Supernodal_factor_view<int> view = SI::supernodal_view(*L, static_cast<const Complex*>(L->x));
   const SI::Supernodal_solve_plan plan(view);
   // what the solve's kernels divide by: the diagonal of an LL^* factor, real and positive
   bool real_diagonal = true;
@@ -728,6 +732,67 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   }
 }
 
+// The default solver seen through CGAL's SparseLinearAlgebraWithFactorTraits_d:
+// factor, solve, copies sharing the factorization, an indefinite matrix refused.
+static void check_cholmod_solver_concept(Test_report& report)
+{
+  typedef SMDF::Cholmod_supernodal_solver Solver;
+  const SI::Complex_sparse_matrix S = grid_matrix(30);
+  Solver solver;
+  const Solver::Matrix A(S);
+  Solver::Vector B(static_cast<std::size_t>(S.rows())), X, X_copy, X_once;
+  for(Eigen::Index i = 0; i < S.rows(); ++i) B.set(static_cast<std::size_t>(i), Complex(double(i % 7), 1.));
+  Complex D(0.);
+  const bool solved = solver.factor(A, D) && solver.linear_solver(B, X);
+  const Solver copy = solver;
+  const bool copy_solved = Solver(copy).linear_solver(B, X_copy);
+  Complex D_once(0.);
+  const bool solved_once = Solver().linear_solver(A, B, X_once, D_once);
+  report.check(solved && D == Complex(1.) && (S * X.eigen_object() - B.eigen_object()).norm() <= 1e-12 * B.norm() &&
+                 copy_solved && X_copy.eigen_object() == X.eigen_object() && solved_once && X_once.eigen_object() == X.eigen_object(),
+               "Cholmod_supernodal_solver as SparseLinearAlgebraWithFactorTraits_d: solves (residual below 1e-12), copies share the factor");
+  SI::Complex_sparse_matrix indefinite = S;
+  indefinite.diagonal().array() -= Complex(5., 0.);
+  report.check(!Solver().factor(Solver::Matrix(indefinite), D), "Cholmod_supernodal_solver: factor() refuses an indefinite matrix");
+}
+
+// The one process-wide setting the factorization makes (dense_kernels.h):
+// OpenBLAS on one thread while the subtrees are factored. Outside the
+// factorization the user's number of threads is in force again, also after
+// factorizations running concurrently on two threads of the program.
+static void check_blas_threads_restored(Test_report& report)
+{
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS
+  typedef SMDF::Cholmod_supernodal_solver Cholmod;
+  const SI::Complex_sparse_matrix S = grid_matrix(120);
+  const int original = openblas_get_num_threads();
+  openblas_set_num_threads(3);
+  auto factor_once = [&S] {
+    Cholmod solver;
+    SI::Factored_matrix<Cholmod> factored(solver);
+    factored.factor(S);
+    return factored.factored_in_parallel();
+  };
+  const bool by_package = factor_once();
+  const int after_one = openblas_get_num_threads();
+  bool both = true;
+  {
+    bool first = false, second = false;
+    std::thread other([&] { first = factor_once(); });
+    second = factor_once();
+    other.join();
+    both = first && second;
+  }
+  const int after_two = openblas_get_num_threads();
+  openblas_set_num_threads(original);
+  report.check(by_package && both && after_one == 3 && after_two == 3,
+               "OpenBLAS's number of threads (3) is given back after one factorization (" + std::to_string(after_one) +
+                 ") and after two concurrent ones (" + std::to_string(after_two) + ")");
+#else
+  (void)report;
+#endif
+}
+
 // The package's numerical factorization on CHOLMOD's analysis
 // (supernodal_factorization.h): used exactly for large factors, equal to the
 // factor CHOLMOD computes on its own (CHOLMOD's ordering is deterministic, so
@@ -735,29 +800,28 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
 // on all, and a matrix that is not positive definite refused.
 static void check_parallel_factorization(Test_report& report, int g)
 {
-  typedef Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> Llt;
-  typedef CGAL::Eigen_solver_traits<Llt> Cholmod;
-  typedef SI::Cholmod_factor_access<Llt> Access;
+  typedef SMDF::Cholmod_supernodal_solver Cholmod;
   const std::string name = "parallel supernodal factorization, grid " + std::to_string(g) + " x " + std::to_string(g);
 #ifdef __linux__
-  report.check(SI::dense_kernels<double>().complete(), name + ": the BLAS and LAPACK kernels are found in the process");
+  report.check(SI::has_dense_kernels, name + ": the BLAS and LAPACK kernels are linked");
 #endif
   const SI::Complex_sparse_matrix S = grid_matrix(g);
-  Cholmod traits;
-  SI::Factored_matrix<Cholmod> factored(traits);
+  Cholmod solver;
+  SI::Factored_matrix<Cholmod> factored(solver);
   factored.factor(S);
-  const cholmod_factor* L = Access::factor(traits.solver());
+  const cholmod_factor* L = solver.factorization().factor();
   const bool large = L->xsize >= SI::parallel_factorization_minimum_entries;
-  report.check(factored.factored_in_parallel() == (large && SI::dense_kernels<double>().complete()),
+  report.check(factored.factored_in_parallel() == (large && SI::has_dense_kernels),
                name + ": the package factors exactly the factors of 16,384 entries or more (" +
                  std::to_string(L->xsize) + ")");
   if(!factored.factored_in_parallel()) return;
   report.check(factored.solves_in_parallel() == (L->xsize >= SI::parallel_solve_minimum_entries),
                name + ": one right-hand side is solved in parallel exactly from a million entries on");
 
-  Llt reference;
-  reference.compute(S);
-  const cholmod_factor* R = Access::factor(reference);
+  Cholmod reference;  // CHOLMOD's own numerical factorization on the same analysis
+  reference.factorization().use_package_factorization(false);
+  SI::Factored_matrix<Cholmod>(reference).factor(S);
+  const cholmod_factor* R = reference.factorization().factor();
   const Complex* Lx = static_cast<const Complex*>(L->x);
   const Complex* Rx = static_cast<const Complex*>(R->x);
   const bool same_layout = R->xsize == L->xsize && R->nsuper == L->nsuper &&
@@ -774,10 +838,10 @@ static void check_parallel_factorization(Test_report& report, int g)
 #ifdef CGAL_LINKED_WITH_TBB
   {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    Cholmod traits_one;
-    SI::Factored_matrix<Cholmod> factored_one(traits_one);
+    Cholmod solver_one;
+    SI::Factored_matrix<Cholmod> factored_one(solver_one);
     factored_one.factor(S);
-    const cholmod_factor* L1 = Access::factor(traits_one.solver());
+    const cholmod_factor* L1 = solver_one.factorization().factor();
     report.check(factored_one.factored_in_parallel() && L1->xsize == L->xsize &&
                    std::equal(Lx, Lx + L->xsize, static_cast<const Complex*>(L1->x)),
                  name + ": the same bits on one thread as on all");
@@ -810,19 +874,16 @@ static void check_parallel_factorization(Test_report& report, int g)
 // a grid large enough for the package's own factorization.
 static void check_single_precision_factorization(Test_report& report, int g)
 {
-  typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Cholmod;
+  typedef SMDF::Cholmod_supernodal_solver Cholmod;
   const std::string name = "single-precision factorization, grid " + std::to_string(g) + " x " + std::to_string(g);
-#ifdef __linux__
-  report.check(SI::dense_kernels<float>().complete(), name + ": the single-precision kernels are found in the process");
-#endif
-  if(!SI::dense_kernels<float>().complete()) return;
+  if(!SI::has_dense_kernels) return;
   const SI::Complex_sparse_matrix S = grid_matrix(g), S_full = S;
   auto factor_single = [&S](SI::Factored_matrix<Cholmod>& f) {
     f.allow_single_precision(true);
     f.factor(S);
   };
-  Cholmod traits;
-  SI::Factored_matrix<Cholmod> factored(traits);
+  Cholmod solver;
+  SI::Factored_matrix<Cholmod> factored(solver);
   factor_single(factored);
   report.check(factored.holds_single_precision() && factored.solves_in_parallel(),
                name + ": allowed, the factor is in single precision, solved by the package");
@@ -839,8 +900,8 @@ static void check_single_precision_factorization(Test_report& report, int g)
 #ifdef CGAL_LINKED_WITH_TBB
   {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-    Cholmod traits_one;
-    SI::Factored_matrix<Cholmod> factored_one(traits_one);
+    Cholmod solver_one;
+    SI::Factored_matrix<Cholmod> factored_one(solver_one);
     factor_single(factored_one);
     report.check(factored_one.solve(B.leftCols(1)) == x, name + ": the same bits on one thread as on all");
   }
@@ -967,7 +1028,12 @@ int main()
     check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 4, 0.);
     check_shifted_eigen_solve<Ldlt>(report, "lumpy sphere, LDLT", lumpy, 1, 0.5);
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-    typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Cholmod;
+    typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<SI::Complex_sparse_matrix> > Eigen_cholmod;
+    report.check(SI::Factored_matrix<Eigen_cholmod>::detects_indefinite &&
+                   SI::Factored_matrix<Eigen_cholmod>::factors_lower_triangle,
+                 "Eigen's CHOLMOD LLT detects indefinite matrices and reads the lower triangle");
+    check_shifted_eigen_solve<Eigen_cholmod>(report, "lumpy sphere, Eigen's CHOLMOD", lumpy, 4, 0.);
+    typedef SMDF::Cholmod_supernodal_solver Cholmod;
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 4, 0.);
     check_shifted_eigen_solve<Cholmod>(report, "lumpy sphere, CHOLMOD", lumpy, 2, -0.5);
     check_parallel_supernodal_solve(report, 3);
@@ -987,6 +1053,8 @@ int main()
       report.check(!SI::Supernodal_solve_plan(view).valid(), "parallel supernodal solve: a tree not in postorder is refused");
     }
     check_parallel_supernodal_solve(report, 200);
+    check_cholmod_solver_concept(report);
+    check_blas_threads_restored(report);
     check_parallel_factorization(report, 3);
     check_parallel_factorization(report, 40);
     check_parallel_factorization(report, 200);

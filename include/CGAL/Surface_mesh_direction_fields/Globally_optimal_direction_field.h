@@ -48,7 +48,7 @@
 
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-#include <Eigen/CholmodSupport>
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
 #endif
 
 #include <chrono>
@@ -72,8 +72,9 @@ The default model of `SparseLinearAlgebraWithFactorTraits_d` used by
 Eigen's simplicial \f$ LDL^\top \f$ factorization of complex Hermitian
 matrices; or, when the macro `CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD`
 is defined (the CMake target does it when CHOLMOD is found; the program must
-then link `libcholmod`), CHOLMOD's supernodal Cholesky factorization through
-Eigen's `CholmodSupernodalLLT`, about three times faster on large meshes with
+then link `libcholmod`, and the BLAS and LAPACK for the package's own
+numerical factorization), `Cholmod_supernodal_solver`: a supernodal Cholesky
+factorization on CHOLMOD's analysis, several times faster on large meshes with
 an optimized BLAS (OpenBLAS).
 
 With `CGAL::Eigen_solver_traits`, the package hands its Eigen matrices to the
@@ -83,8 +84,7 @@ matrix with the same sparsity pattern is factored again. Any other model of
 too, through a copy of each matrix.
 */
 #if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD) && !defined(DOXYGEN_RUNNING)
-typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<std::complex<double> > > >
-  Default_direction_field_solver;
+typedef Cholmod_supernodal_solver Default_direction_field_solver;
 #else
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double> > > >
   Default_direction_field_solver;
@@ -106,7 +106,7 @@ calls the class keeps:
   so that several guidance fields, \f$ \lambda_t \f$ or alignment weights for
   the same `n` and `s` cost no assembly and no eigen-solve of their own beyond
   the eigenvalue bound, which is also kept;
-- with `CGAL::Eigen_solver_traits` (the default), one solver per component whose
+- with the default solver or `CGAL::Eigen_solver_traits`, one solver per component whose
   symbolic analysis (fill-reducing ordering) is reused for every later
   factorization of that component: the pattern of \f$ A - \sigma M \f$ does not
   depend on `n` or `s`. This memory (one Cholesky factor per component) is

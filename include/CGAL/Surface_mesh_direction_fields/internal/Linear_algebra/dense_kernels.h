@@ -14,112 +14,71 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+
 #include <complex>
 #include <mutex>
 #include <type_traits>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <dlfcn.h>
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_HAS_DLSYM 1
-#endif
-
 // The four dense kernels of a supernodal Cholesky factorization (complex
 // Hermitian rank-k update, product, triangular solve, dense Cholesky), in
-// double (zherk, ...) or single precision (cherk, ...), taken from the BLAS
-// and LAPACK the process already has loaded: CHOLMOD calls them, so linking
-// CHOLMOD is all a user of the package does. They are looked up by name at
-// run time (32-bit integer interface, Fortran names); where the lookup fails
-// (no dynamic loader, a static build, another naming), the kernels are
-// missing and the caller uses CHOLMOD's own factorization.
+// double or single precision, from the BLAS (through its standard C
+// interface, CBLAS) and LAPACK linked at build time. The CMake target
+// defines CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS and links both when it
+// finds them (with CHOLMOD, which needs them too); without the macro the
+// kernels are absent and CHOLMOD factors alone.
 //
-// OpenBLAS runs large calls on its own threads; when two of the package's
-// threads call it at once, those calls wait for each other. While independent
-// subtrees are factored on the package's threads, OpenBLAS is therefore asked
-// for one thread (`Single_threaded_blas`), and given its previous number back
-// afterwards. Other BLAS libraries are left as they are.
+// LAPACK has no standard C header on every system (LAPACKE is a separate
+// package): its Cholesky routines are declared here with the Fortran calling
+// convention that CHOLMOD itself uses.
+//
+// Where the factorization's own threads work side by side (the independent
+// subtrees of the elimination tree, whose supernodes are small), a
+// multithreaded BLAS called from each of them at once makes them wait for
+// each other (a factorization 2 to 4 times slower was measured with
+// OpenBLAS on two threads). Two ways out, chosen at build time:
+// - with OpenBLAS (CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS,
+//   defined by the CMake target when it links OpenBLAS), OpenBLAS is asked
+//   for one thread while the subtrees are factored (`Single_threaded_blas`),
+//   and its previous number of threads is given back afterwards. This is a
+//   process-wide setting: another thread of the program that calls OpenBLAS
+//   during that phase runs it on one thread. It is the fastest (Eigen's
+//   kernels below cost 4 to 11% more of the whole computation, benchmark's
+//   README);
+// - otherwise the subtrees use the same kernels written with Eigen
+//   (`Eigen_dense_kernels`), which always run on the calling thread, and
+//   nothing outside the package changes.
+// The large supernodes at the top of the tree, factored one at a time, use
+// the BLAS with its own threads in both cases.
+
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+#include <cblas.h>
+extern "C" {
+void zpotrf_(const char* uplo, const int* n, std::complex<double>* a, const int* lda, int* info);
+void cpotrf_(const char* uplo, const int* n, std::complex<float>* a, const int* lda, int* info);
+}
+#endif
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-template <typename Real>
-struct Dense_kernels
-{
-  typedef std::complex<Real> Scalar;
-  typedef void (*Herk)(const char* uplo, const char* trans, const int* n, const int* k, const Real* alpha,
-                       const Scalar* a, const int* lda, const Real* beta, Scalar* c, const int* ldc);
-  typedef void (*Gemm)(const char* transa, const char* transb, const int* m, const int* n, const int* k,
-                       const Scalar* alpha, const Scalar* a, const int* lda, const Scalar* b, const int* ldb,
-                       const Scalar* beta, Scalar* c, const int* ldc);
-  typedef void (*Trsm)(const char* side, const char* uplo, const char* transa, const char* diag, const int* m,
-                       const int* n, const Scalar* alpha, const Scalar* a, const int* lda, Scalar* b,
-                       const int* ldb);
-  typedef void (*Potrf)(const char* uplo, const int* n, Scalar* a, const int* lda, int* info);
-
-  Herk herk = nullptr;
-  Gemm gemm = nullptr;
-  Trsm trsm = nullptr;
-  Potrf potrf = nullptr;
-
-  bool complete() const { return herk && gemm && trsm && potrf; }
-};
-
-// OpenBLAS's control of its threads (absent from other BLAS libraries).
-struct Blas_thread_control
-{
-  typedef void (*Set_threads)(int);
-  typedef int (*Get_threads)();
-  Set_threads set_threads = nullptr;
-  Get_threads get_threads = nullptr;
-};
-
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_HAS_DLSYM
-template <typename Function>
-Function loaded_function(const char* name)
-{
-  return reinterpret_cast<Function>(dlsym(RTLD_DEFAULT, name));
-}
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+constexpr bool has_dense_kernels = true;
+#else
+constexpr bool has_dense_kernels = false;
+#endif
+#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS) && defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS)
+constexpr bool controls_blas_threads = true;
+#else
+constexpr bool controls_blas_threads = false;
 #endif
 
-// The kernels of this process for complex<Real> (Real: double or float),
-// looked up once.
-template <typename Real>
-const Dense_kernels<Real>& dense_kernels()
-{
-  static_assert(std::is_same<Real, double>::value || std::is_same<Real, float>::value,
-                "the BLAS has complex kernels in double and single precision only");
-  static const Dense_kernels<Real> kernels = [] {
-    Dense_kernels<Real> k;
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_HAS_DLSYM
-    const bool single = std::is_same<Real, float>::value;
-    typedef Dense_kernels<Real> K;
-    k.herk = loaded_function<typename K::Herk>(single ? "cherk_" : "zherk_");
-    k.gemm = loaded_function<typename K::Gemm>(single ? "cgemm_" : "zgemm_");
-    k.trsm = loaded_function<typename K::Trsm>(single ? "ctrsm_" : "ztrsm_");
-    k.potrf = loaded_function<typename K::Potrf>(single ? "cpotrf_" : "zpotrf_");
-#endif
-    return k;
-  }();
-  return kernels;
-}
-
-inline const Blas_thread_control& blas_thread_control()
-{
-  static const Blas_thread_control control = [] {
-    Blas_thread_control c;
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_HAS_DLSYM
-    c.set_threads = loaded_function<Blas_thread_control::Set_threads>("openblas_set_num_threads");
-    c.get_threads = loaded_function<Blas_thread_control::Get_threads>("openblas_get_num_threads");
-    if(!c.set_threads || !c.get_threads) c.set_threads = nullptr, c.get_threads = nullptr;
-#endif
-    return c;
-  }();
-  return control;
-}
-
-// For its lifetime, OpenBLAS uses one thread. The scopes of concurrent
-// factorizations are counted: the first saves the number of threads, the
-// last restores it.
+// For its lifetime, OpenBLAS runs on one thread (where the package controls
+// it, see above; otherwise it does nothing). The scopes of concurrent
+// factorizations are counted: the first saves OpenBLAS's number of threads,
+// the last gives it back.
 class Single_threaded_blas
 {
   static std::mutex& lock()
@@ -141,24 +100,136 @@ class Single_threaded_blas
 public:
   Single_threaded_blas()
   {
-    const Blas_thread_control& k = blas_thread_control();
-    if(!k.set_threads) return;
+#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS) && defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS)
     std::lock_guard<std::mutex> guard(lock());
     if(holders()++ == 0)
     {
-      saved_threads() = k.get_threads();
-      k.set_threads(1);
+      saved_threads() = openblas_get_num_threads();
+      openblas_set_num_threads(1);
     }
+#endif
   }
   ~Single_threaded_blas()
   {
-    const Blas_thread_control& k = blas_thread_control();
-    if(!k.set_threads) return;
+#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS) && defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS)
     std::lock_guard<std::mutex> guard(lock());
-    if(--holders() == 0) k.set_threads(saved_threads());
+    if(--holders() == 0) openblas_set_num_threads(saved_threads());
+#endif
   }
   Single_threaded_blas(const Single_threaded_blas&) = delete;
   Single_threaded_blas& operator=(const Single_threaded_blas&) = delete;
+};
+
+// Column-major blocks of std::complex<Real> (Real: double or float), with
+// leading dimensions.
+template <typename Real>
+struct Dense_kernels
+{
+  static_assert(std::is_same<Real, double>::value || std::is_same<Real, float>::value,
+                "the BLAS has complex kernels in double and single precision only");
+  typedef std::complex<Real> Scalar;
+  static constexpr bool is_double = std::is_same<Real, double>::value;
+
+  // the lower triangle of C (n x n) = A A^*, A being n x k
+  static void lower_gram(int n, int k, const Scalar* A, int lda, Scalar* C, int ldc)
+  {
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+    if constexpr(is_double)
+      cblas_zherk(CblasColMajor, CblasLower, CblasNoTrans, n, k, 1., A, lda, 0., C, ldc);
+    else
+      cblas_cherk(CblasColMajor, CblasLower, CblasNoTrans, n, k, 1.f, A, lda, 0.f, C, ldc);
+#else
+    (void)n, (void)k, (void)A, (void)lda, (void)C, (void)ldc;
+#endif
+  }
+
+  // C (m x n) = A B^*, A being m x k and B n x k
+  static void product_with_adjoint(int m, int n, int k, const Scalar* A, int lda, const Scalar* B, int ldb,
+                                   Scalar* C, int ldc)
+  {
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+    const Scalar one(1), zero(0);
+    if constexpr(is_double)
+      cblas_zgemm(CblasColMajor, CblasNoTrans, CblasConjTrans, m, n, k, &one, A, lda, B, ldb, &zero, C, ldc);
+    else
+      cblas_cgemm(CblasColMajor, CblasNoTrans, CblasConjTrans, m, n, k, &one, A, lda, B, ldb, &zero, C, ldc);
+#else
+    (void)m, (void)n, (void)k, (void)A, (void)lda, (void)B, (void)ldb, (void)C, (void)ldc;
+#endif
+  }
+
+  // B (m x n) := B L^-*, L being the lower triangle of an n x n block
+  static void solve_with_adjoint_on_right(int m, int n, const Scalar* L, int ldl, Scalar* B, int ldb)
+  {
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+    const Scalar one(1);
+    if constexpr(is_double)
+      cblas_ztrsm(CblasColMajor, CblasRight, CblasLower, CblasConjTrans, CblasNonUnit, m, n, &one, L, ldl, B, ldb);
+    else
+      cblas_ctrsm(CblasColMajor, CblasRight, CblasLower, CblasConjTrans, CblasNonUnit, m, n, &one, L, ldl, B, ldb);
+#else
+    (void)m, (void)n, (void)L, (void)ldl, (void)B, (void)ldb;
+#endif
+  }
+
+  // A = L L^* in place (the lower triangle of the n x n block A); returns
+  // LAPACK's info: 0, or the 1-based column where A is not positive definite
+  static int cholesky_lower(int n, Scalar* A, int lda)
+  {
+    int info = -1;
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
+    if constexpr(is_double)
+      zpotrf_("L", &n, A, &lda, &info);
+    else
+      cpotrf_("L", &n, A, &lda, &info);
+#else
+    (void)n, (void)A, (void)lda;
+#endif
+    return info;
+  }
+};
+
+// The kernels above with Eigen's dense products and Cholesky factorization,
+// on the calling thread.
+template <typename Real>
+struct Eigen_dense_kernels
+{
+  typedef std::complex<Real> Scalar;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
+  typedef Eigen::Map<Dense, 0, Eigen::OuterStride<> > Block;
+  typedef Eigen::Map<const Dense, 0, Eigen::OuterStride<> > Const_block;
+
+  static void lower_gram(int n, int k, const Scalar* A, int lda, Scalar* C, int ldc)
+  {
+    const Const_block a(A, n, k, Eigen::OuterStride<>(lda));
+    Block c(C, n, n, Eigen::OuterStride<>(ldc));
+    c.template triangularView<Eigen::Lower>().setZero();
+    c.template selfadjointView<Eigen::Lower>().rankUpdate(a, Real(1));  // Eigen's Hermitian rank-k update
+  }
+
+  static void product_with_adjoint(int m, int n, int k, const Scalar* A, int lda, const Scalar* B, int ldb,
+                                   Scalar* C, int ldc)
+  {
+    const Const_block a(A, m, k, Eigen::OuterStride<>(lda)), b(B, n, k, Eigen::OuterStride<>(ldb));
+    Block c(C, m, n, Eigen::OuterStride<>(ldc));
+    c.noalias() = a * b.adjoint();
+  }
+
+  static void solve_with_adjoint_on_right(int m, int n, const Scalar* L, int ldl, Scalar* B, int ldb)
+  {
+    const Const_block l(L, n, n, Eigen::OuterStride<>(ldl));
+    Block b(B, m, n, Eigen::OuterStride<>(ldb));
+    l.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(b);
+  }
+
+  // returns 0, or 1 where the block is not positive definite (Eigen does not
+  // say in which column)
+  static int cholesky_lower(int n, Scalar* A, int lda)
+  {
+    Block a(A, n, n, Eigen::OuterStride<>(lda));
+    Eigen::LLT<Eigen::Ref<Dense, 0, Eigen::OuterStride<> >, Eigen::Lower> in_place(a);
+    return in_place.info() == Eigen::Success ? 0 : 1;
+  }
 };
 
 } // namespace internal

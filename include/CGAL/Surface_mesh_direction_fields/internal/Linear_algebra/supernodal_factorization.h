@@ -39,9 +39,10 @@
 // rank-k update and a product, from the BLAS); then the diagonal block is
 // factored (LAPACK) and the rows below are solved against it. A supernode
 // reads only its descendants, so the subtrees of the solve's plan
-// (`Supernodal_solve_plan`) are factored in parallel, each on one thread with
-// a single-threaded BLAS, and the top (their ancestors, where the large
-// supernodes are) afterwards in order, with the BLAS's own threads. CHOLMOD
+// (`Supernodal_solve_plan`) are factored in parallel, each on one thread
+// (dense_kernels.h says how the BLAS is kept to one thread there), and the
+// top (their ancestors, where the large supernodes are) afterwards in order,
+// with the BLAS's own threads. CHOLMOD
 // runs all supernodes in order, so its second thread works only inside the
 // few large BLAS calls; most supernodes of a surface mesh's matrix are small.
 //
@@ -175,31 +176,26 @@ void assemble_supernode(const Supernodal_factor_view<Index, Scalar>& L, Scalar* 
 // descendant d with the rows r1 (those among s's columns) and r2 (all of
 // its rows from r1 on): C = L_d[r2] L_d[r1]^*, the triangle of its top
 // square by a rank-k update, the rest by a product, then scattered.
-template <typename Index, typename Scalar>
+template <typename Kernels, typename Index, typename Scalar>
 void apply_updates(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values, const Supernodal_updates<Index>& updates,
                    std::size_t s, Supernode_workspace<Index, Scalar>& work)
 {
-  typedef typename Scalar::value_type Real;
-  const Dense_kernels<Real>& blas = dense_kernels<Real>();
   const Index first = L.super[s], end_column = L.super[s + 1], rows = L.row_start[s + 1] - L.row_start[s];
   Scalar* block = values + L.value_start[s];
   for(std::size_t k = updates.begin(s); k < updates.end(s); ++k)
   {
     const std::size_t d = updates.source(k);
     const Index p1 = updates.first_row(k), d_rows = L.row_start[d + 1] - L.row_start[d];
-    int d_columns = static_cast<int>(L.super[d + 1] - L.super[d]), ld = static_cast<int>(d_rows);
+    const int d_columns = static_cast<int>(L.super[d + 1] - L.super[d]), ld = static_cast<int>(d_rows);
     const Index* r = L.rows + L.row_start[d];
     Index p2 = p1;
     while(p2 < d_rows && r[p2] < end_column) ++p2;
-    int n1 = static_cast<int>(p2 - p1), n2 = static_cast<int>(d_rows - p1), rest = n2 - n1;
+    const int n1 = static_cast<int>(p2 - p1), n2 = static_cast<int>(d_rows - p1), rest = n2 - n1;
     work.product.resize(static_cast<std::size_t>(n1) * static_cast<std::size_t>(n2));
     Scalar* C = work.product.data();
     const Scalar* Ld = values + L.value_start[d] + p1;
-    const Real one = 1, zero = 0;
-    const Scalar complex_one(1), complex_zero(0);
-    blas.herk("L", "N", &n1, &d_columns, &one, Ld, &ld, &zero, C, &n2);
-    if(rest > 0)
-      blas.gemm("N", "C", &rest, &n1, &d_columns, &complex_one, Ld + n1, &ld, Ld, &ld, &complex_zero, C + n1, &n2);
+    Kernels::lower_gram(n1, d_columns, Ld, ld, C, n2);
+    if(rest > 0) Kernels::product_with_adjoint(rest, n1, d_columns, Ld + n1, ld, Ld, ld, C + n1, n2);
     for(int jj = 0; jj < n1; ++jj)
     {
       Scalar* column = block + static_cast<std::size_t>(r[p1 + jj] - first) * static_cast<std::size_t>(rows);
@@ -212,41 +208,41 @@ void apply_updates(const Supernodal_factor_view<Index, Scalar>& L, Scalar* value
 // Factors the diagonal block of supernode s and solves the rows below with
 // it. Returns the column where the matrix showed not to be positive
 // definite, or -1.
-template <typename Index, typename Scalar>
+template <typename Kernels, typename Index, typename Scalar>
 std::ptrdiff_t factor_supernode_block(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values, std::size_t s)
 {
-  typedef typename Scalar::value_type Real;
-  const Dense_kernels<Real>& blas = dense_kernels<Real>();
-  int columns = static_cast<int>(L.super[s + 1] - L.super[s]);
-  int rows = static_cast<int>(L.row_start[s + 1] - L.row_start[s]), below = rows - columns, info = 0;
+  const int columns = static_cast<int>(L.super[s + 1] - L.super[s]);
+  const int rows = static_cast<int>(L.row_start[s + 1] - L.row_start[s]), below = rows - columns;
   Scalar* block = values + L.value_start[s];
-  blas.potrf("L", &columns, block, &rows, &info);
+  const int info = Kernels::cholesky_lower(columns, block, rows);
   if(info != 0) return static_cast<std::ptrdiff_t>(L.super[s]) + (info > 0 ? info - 1 : 0);
-  const Scalar complex_one(1);
-  if(below > 0) blas.trsm("R", "L", "C", "N", &below, &columns, &complex_one, block, &rows, block + columns, &rows);
+  if(below > 0) Kernels::solve_with_adjoint_on_right(below, columns, block, rows, block + columns, rows);
   return -1;
 }
 
-template <typename Index, typename Scalar>
+template <typename Kernels, typename Index, typename Scalar>
 std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
                                 const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
                                 std::size_t s, Supernode_workspace<Index, Scalar>& work)
 {
   assemble_supernode(L, values, lower, s, work);
-  apply_updates(L, values, updates, s, work);
-  return factor_supernode_block(L, values, s);
+  apply_updates<Kernels>(L, values, updates, s, work);
+  return factor_supernode_block<Kernels>(L, values, s);
 }
 
 // Factors P A P^T = L L^* into `values` (the factor's layout in L, whose
 // own values are not read), `lower` being the lower triangle of P A P^T.
 // Returns -1, or a column where P A P^T showed not to be positive definite
-// (the factor is then unusable). Needs dense_kernels<Real>().complete() for
-// Scalar = std::complex<Real>.
+// (the factor is then unusable).
 template <typename Index, typename Scalar>
 std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
                                     const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
                                     const Supernodal_solve_plan& plan)
 {
+  typedef typename Scalar::value_type Real;
+  typedef std::conditional_t<has_dense_kernels, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Top_kernels;
+  // on the calling thread (dense_kernels.h says why)
+  typedef std::conditional_t<controls_blas_threads, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Subtree_kernels;
   const std::vector<Supernodal_solve_plan::Task>& tasks = plan.tasks();
   // the heaviest subtrees first, for a balanced end (the order changes no result)
   std::vector<double> work(tasks.size(), 0.);
@@ -269,7 +265,7 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>&
       Supernode_workspace<Index, Scalar> workspace(L.n);
       for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0; ++s)
       {
-        const std::ptrdiff_t column = factor_supernode(L, values, lower, updates, s, workspace);
+        const std::ptrdiff_t column = factor_supernode<Subtree_kernels>(L, values, lower, updates, s, workspace);
         if(column >= 0) failed_column.store(column);
       }
     });
@@ -278,7 +274,7 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>&
   Supernode_workspace<Index, Scalar> workspace(L.n);
   for(std::size_t s : plan.top())
   {
-    const std::ptrdiff_t column = factor_supernode(L, values, lower, updates, s, workspace);
+    const std::ptrdiff_t column = factor_supernode<Top_kernels>(L, values, lower, updates, s, workspace);
     if(column >= 0) return column;
   }
   return -1;
