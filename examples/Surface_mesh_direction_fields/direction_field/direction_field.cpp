@@ -35,6 +35,11 @@
 #endif
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/resource.h>
+#endif
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -369,11 +374,8 @@ int print_to_stderr(const char* format, ...)
 }
 #endif
 
-int main(int argc, char** argv)
+static int run(int argc, char** argv)
 {
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-  SuiteSparse_config.printf_func = print_to_stderr;
-#endif
   std::signal(SIGPIPE, SIG_IGN);  // a closed standard output is a write error (output_files.h)
   Progress progress(true);
   try
@@ -434,4 +436,36 @@ int main(int argc, char** argv)
     if(is_first_launched_process()) std::cerr << "direction_field: error: " << e.what() << std::endl;
   }
   return EXIT_FAILURE;
+}
+
+// Under an address-space limit too small for OpenBLAS's work buffers, a
+// thread of OpenBLAS's pool retries its allocation forever, and OpenBLAS's
+// exit handler waits for that thread: the program would never end although
+// its work is done (the package itself then avoids the BLAS, see
+// dense_kernels.h). With a limit set, the program therefore ends without
+// the libraries' exit handlers, once its outputs are committed and flushed.
+static bool address_space_is_limited()
+{
+#if defined(__unix__) || defined(__APPLE__)
+  rlimit limit{};
+  return getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+#else
+  return false;
+#endif
+}
+
+int main(int argc, char** argv)
+{
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+  SuiteSparse_config.printf_func = print_to_stderr;
+#endif
+  const int status = run(argc, argv);
+  if(address_space_is_limited())
+  {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(status);
+  }
+  return status;
 }

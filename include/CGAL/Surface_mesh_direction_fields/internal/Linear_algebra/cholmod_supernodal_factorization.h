@@ -49,6 +49,10 @@
 // own array; CHOLMOD has none), for iterations that correct their own errors.
 // Every status CHOLMOD reports is checked: out of memory becomes
 // std::bad_alloc, any other failure a Solver_failure_error naming the step.
+// Where the address space left is too small for the BLAS's work buffers
+// (dense_kernels.h, blas_work_space_available()), neither the package nor
+// CHOLMOD calls the BLAS: the package factors with Eigen's kernels and
+// solves every right-hand side itself.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -175,7 +179,7 @@ public:
   Complex_dense_matrix solve(const Complex_dense_matrix& B) const
   {
     if(B.cols() == 1 && m_ready) return finite(solve_one(B));
-    if(m_single) return finite(solve_columns(B));
+    if(m_single || (m_ready && !m_blas_usable)) return finite(solve_columns(B));
     if(!m_factor || m_factor->minor < m_factor->n) throw Solver_failure_error("solving without a factorization");
     Complex_dense_matrix rhs = B;
     cholmod_dense b = cholmod_view(rhs);
@@ -258,6 +262,7 @@ private:
 
   bool factor_numerically(const Complex_sparse_matrix& lower, bool new_structure, bool single_allowed)
   {
+    m_blas_usable = blas_work_space_available();
     if(new_structure || !m_plan)
     {
       m_plan.reset();
@@ -265,7 +270,11 @@ private:
     }
     if(!uses_package_factorization()) return factor_with_cholmod(lower);
     read_structure(supernodal_view(*m_factor, static_cast<const Complex*>(nullptr)));
-    if(!m_plan->valid()) return factor_with_cholmod(lower);
+    if(!m_plan->valid())
+    {
+      if(!m_blas_usable) throw std::bad_alloc();  // CHOLMOD would call the BLAS
+      return factor_with_cholmod(lower);
+    }
     if(!m_updates) m_updates = std::make_unique<Supernodal_updates<int> >(m_view);
 
     const Complex_sparse_matrix permuted = permuted_lower_triangle(lower, m_view.permutation);
@@ -276,8 +285,10 @@ private:
 
   bool uses_package_factorization() const
   {
-    return has_dense_kernels && m_package_factorization_allowed && m_factor->is_super &&
-           m_factor->itype == CHOLMOD_INT && m_factor->xsize >= parallel_factorization_minimum_entries;
+    // without the BLAS (see blas_work_space_available()), every size
+    const bool large_enough = m_factor->xsize >= parallel_factorization_minimum_entries || !m_blas_usable;
+    return (has_dense_kernels || !m_blas_usable) && m_package_factorization_allowed && m_factor->is_super &&
+           m_factor->itype == CHOLMOD_INT && large_enough;
   }
 
   // the view and the solve's plan of the factor's structure (the plan is
@@ -308,12 +319,12 @@ private:
                    "allocating the factor");
     m_view = supernodal_view(*m_factor, static_cast<const Complex*>(m_factor->x));
     const std::ptrdiff_t column =
-      supernodal_factorize(m_view, static_cast<Complex*>(m_factor->x), permuted, *m_updates, *m_plan);
+      supernodal_factorize(m_view, static_cast<Complex*>(m_factor->x), permuted, *m_updates, *m_plan, m_blas_usable);
     m_factor->is_ll = true;
     m_factor->minor = column < 0 ? m_factor->n : static_cast<std::size_t>(column);
     if(column >= 0) return false;
     m_factored_by_package = true;
-    m_ready = m_factor->xsize >= parallel_solve_minimum_entries;
+    m_ready = m_factor->xsize >= parallel_solve_minimum_entries || !m_blas_usable;
     return true;
   }
 
@@ -330,7 +341,8 @@ private:
     }
     m_single_view = supernodal_view(*m_factor, m_single_values.data());
     const Eigen::SparseMatrix<Single> permuted_single = with_values_in_precision<Single>(permuted);
-    if(supernodal_factorize(m_single_view, m_single_values.data(), permuted_single, *m_updates, *m_plan) >= 0)
+    if(supernodal_factorize(m_single_view, m_single_values.data(), permuted_single, *m_updates, *m_plan,
+                            m_blas_usable) >= 0)
     {
       release_single_precision_factor();
       return false;
@@ -347,17 +359,20 @@ private:
     return supernodal_solve(m_view, *m_plan, B.col(0));
   }
 
-  // CHOLMOD has no single precision: a block column by column
+  // a block column by column: CHOLMOD has no single precision, and its
+  // solve calls the BLAS
   Complex_dense_matrix solve_columns(const Complex_dense_matrix& B) const
   {
     Complex_dense_matrix X(B.rows(), B.cols());
-    for(Eigen::Index j = 0; j < B.cols(); ++j) X.col(j) = supernodal_solve(m_single_view, *m_plan, B.col(j));
+    for(Eigen::Index j = 0; j < B.cols(); ++j)
+      X.col(j) = m_single ? supernodal_solve(m_single_view, *m_plan, B.col(j)) : supernodal_solve(m_view, *m_plan, B.col(j));
     return X;
   }
 
   mutable cholmod_common m_common;  // CHOLMOD's solve takes it non-const (workspace, status)
   cholmod_factor* m_factor = nullptr;
   bool m_analyzed = false, m_package_factorization_allowed = true;
+  bool m_blas_usable = true;  // blas_work_space_available() at the last factorization
   int m_default_first_ordering = 0;
   // the compressed pattern that analyze_pattern() analyzed, until a factorization checks it
   std::vector<Complex_sparse_matrix::StorageIndex> m_pending_starts, m_pending_rows;

@@ -17,9 +17,16 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <complex>
+#include <cstddef>
 #include <mutex>
+#include <thread>
 #include <type_traits>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/mman.h>
+#endif
 
 // The four dense kernels of a supernodal Cholesky factorization (complex
 // Hermitian rank-k update, product, triangular solve, dense Cholesky), in
@@ -74,6 +81,28 @@ constexpr bool controls_blas_threads = true;
 #else
 constexpr bool controls_blas_threads = false;
 #endif
+
+// Whether the BLAS can be called without a hang under memory pressure.
+// OpenBLAS takes a work buffer for each calling thread the first time a
+// level-3 routine runs there (128 MiB on x86-64 with Debian's 0.3.21), and
+// when it cannot map it, it retries forever (both threads were seen looping
+// in blas_memory_alloc under zpotrf_ with an address-space limit). So before
+// a factorization, the package checks that address space for such buffers
+// (160 MiB for each hardware thread and one more) can be reserved; where it
+// cannot, the factorization and its solves avoid the BLAS (Eigen's kernels,
+// the package's solve), and a shortage shows as std::bad_alloc instead.
+// The reservation is released at once and touches no memory.
+inline bool blas_work_space_available()
+{
+#if defined(__unix__) || defined(__APPLE__)
+  const std::size_t threads = (std::max)(1u, std::thread::hardware_concurrency()) + 1;
+  const std::size_t bytes = threads * (std::size_t(160) << 20);
+  void* reserved = mmap(nullptr, bytes, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if(reserved == MAP_FAILED) return false;
+  munmap(reserved, bytes);
+#endif
+  return true;
+}
 
 // For its lifetime, OpenBLAS runs on one thread (where the package controls
 // it, see above; otherwise it does nothing). The scopes of concurrent

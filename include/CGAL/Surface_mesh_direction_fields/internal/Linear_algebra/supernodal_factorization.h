@@ -25,6 +25,8 @@
 #include <atomic>
 #include <complex>
 #include <cstddef>
+#include <memory>
+#include <type_traits>
 #include <numeric>
 #include <vector>
 
@@ -231,18 +233,15 @@ std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index, Scalar>& L, 
 }
 
 // Factors P A P^T = L L^* into `values` (the factor's layout in L, whose
-// own values are not read), `lower` being the lower triangle of P A P^T.
-// Returns -1, or a column where P A P^T showed not to be positive definite
-// (the factor is then unusable).
-template <typename Index, typename Scalar>
-std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
-                                    const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
-                                    const Supernodal_solve_plan& plan)
+// own values are not read), `lower` being the lower triangle of P A P^T,
+// with the kernels Top_kernels for the top of the tree and Subtree_kernels in
+// the subtrees. Returns -1, or a column where P A P^T showed not to be
+// positive definite (the factor is then unusable).
+template <typename Top_kernels, typename Subtree_kernels, typename Index, typename Scalar>
+std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
+                                         const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
+                                         const Supernodal_solve_plan& plan)
 {
-  typedef typename Scalar::value_type Real;
-  typedef std::conditional_t<has_dense_kernels, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Top_kernels;
-  // on the calling thread (dense_kernels.h says why)
-  typedef std::conditional_t<controls_blas_threads, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Subtree_kernels;
   const std::vector<Supernodal_solve_plan::Task>& tasks = plan.tasks();
   // the heaviest subtrees first, for a balanced end (the order changes no result)
   std::vector<double> work(tasks.size(), 0.);
@@ -259,7 +258,9 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>&
 
   std::atomic<std::ptrdiff_t> failed_column(-1);
   {
-    Single_threaded_blas one_thread_each;
+    std::unique_ptr<Single_threaded_blas> one_thread_each;
+    if(std::is_same<Subtree_kernels, Dense_kernels<typename Scalar::value_type> >::value)
+      one_thread_each = std::make_unique<Single_threaded_blas>();
     parallel_for_each_task(tasks.size(), [&](std::size_t i) {
       const Supernodal_solve_plan::Task& task = tasks[order[i]];
       Supernode_workspace<Index, Scalar> workspace(L.n);
@@ -278,6 +279,22 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>&
     if(column >= 0) return column;
   }
   return -1;
+}
+
+// The same with the kernels of dense_kernels.h: the BLAS at the top and, where
+// the package keeps OpenBLAS to one thread, in the subtrees (Eigen's there
+// otherwise); Eigen's everywhere if `use_blas` is false or the BLAS is not linked.
+template <typename Index, typename Scalar>
+std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
+                                    const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
+                                    const Supernodal_solve_plan& plan, bool use_blas = true)
+{
+  typedef typename Scalar::value_type Real;
+  typedef std::conditional_t<has_dense_kernels, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Top_kernels;
+  typedef std::conditional_t<controls_blas_threads, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Subtree_kernels;
+  if(!use_blas)
+    return supernodal_factorize_with<Eigen_dense_kernels<Real>, Eigen_dense_kernels<Real> >(L, values, lower, updates, plan);
+  return supernodal_factorize_with<Top_kernels, Subtree_kernels>(L, values, lower, updates, plan);
 }
 
 } // namespace internal
