@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The command-line contract of direction_field (README.md, "Command line"):
+# The command-line contract of direction_field (examples/.../direction_field/README.md):
 # outputs, their order and format, the JSON keys, and one line on stderr with a
 # non-zero status on bad input.
 #   usage: test_command_line.sh DIRECTION_FIELD SHARED_MESH_DIR OUTPUT_DIR

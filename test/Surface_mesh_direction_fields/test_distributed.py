@@ -113,4 +113,19 @@ r = subprocess.run([MPIEXEC, "-np", "2", BIN, two_parts, "--solver", "petsc", "-
 check(r.returncode != 0 and r.stderr.count("direction_field: error:") == 1,
       "a bad option under mpirun: status %d, %d error lines" % (r.returncode, r.stderr.count("direction_field: error:")))
 
+# PETSc refusing an option inside a solve (petsc_calls.h): every process
+# ends (no hang), the status is not 0, a failing process names the PETSc
+# routine in one line, and no output is renamed into place
+for petsc_options, extra, what in (("-st_pc_type nonsense", [], "the eigen-solve's preconditioner"),
+                                   ("-ksp_type nonsense", ["--align", "curvature"], "the aligned solve's Krylov method")):
+    for ranks in (1, 2):
+        target = os.path.join(OUT, "refused_%d.txt" % ranks)
+        r = subprocess.run([MPIEXEC, "-np", str(ranks), BIN, two_parts, "--solver", "petsc", "--distribute-from", "0",
+                            "--directions", target, "--petsc-options", petsc_options] + extra,
+                           capture_output=True, text=True, env=ENV, timeout=300)
+        lines = [l for l in r.stderr.splitlines() if "PETSc failed in" in l]
+        check(r.returncode != 0 and 1 <= len(lines) <= ranks and all(l.startswith("Surface_mesh_direction_fields: error on process") for l in lines)
+              and not os.path.exists(target) and "Traceback" not in r.stderr and "[0]PETSC ERROR" not in r.stderr,
+              "%s refused (%s), %d processes: status %d, lines %r" % (petsc_options, what, ranks, r.returncode, lines[:2]))
+
 check.finish()

@@ -1,5 +1,5 @@
 // The options of the command-line program direction_field: one table says
-// what each one means (printed by --help, and in README.md "Command line"),
+// what each one means (printed by --help, and in this folder's README.md),
 // parse_options() reads and checks them.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
@@ -87,7 +87,7 @@ inline const Option_help option_help[] = {
   {"Alignment", "--eigenvalue-bound", "also compute lambda_1 for aligned fields (the JSON's eigenvalue_bound)"},
   {"Outputs", "--directions FILE", "one 'x y z' per vertex of MESH, in its order (17 significant digits)"},
   {"Outputs", "--singularities FILE", "one 'f k' per singular face of MESH (index k/n)"},
-  {"Outputs", "--json", "one line of JSON on stdout instead of the summary (keys: README.md)"},
+  {"Outputs", "--json", "one line of JSON on stdout instead of the summary (keys: direction_field/README.md)"},
   {"Outputs", "--json-file FILE", "the same line of JSON in FILE"},
   {"Outputs", "--png FILE", "a picture: the shaded mesh from four sides, the field, the singularities, a legend"},
   {"Outputs", "--vtk FILE", "the field for ParaView: .vtk (legacy) or .vtu (XML, also read by meshio)"},

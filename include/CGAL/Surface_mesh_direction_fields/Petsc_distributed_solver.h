@@ -70,8 +70,8 @@ public:
                                     std::size_t minimum_distributed_vertices = 50000)
     : m_comm(communicator), m_minimum_vertices(minimum_distributed_vertices)
   {
-    MPI_Comm_rank(m_comm, &m_rank);
-    MPI_Comm_size(m_comm, &m_size);
+    CGAL_SMDF_MPI_CALL(MPI_Comm_rank(m_comm, &m_rank));
+    CGAL_SMDF_MPI_CALL(MPI_Comm_size(m_comm, &m_size));
   }
 
   /// the number of processes of the communicator
@@ -93,7 +93,7 @@ public:
     for(;;)
     {
       int request = finish_request;
-      MPI_Bcast(&request, 1, MPI_INT, 0, m_comm);
+      CGAL_SMDF_MPI_CALL(MPI_Bcast(&request, 1, MPI_INT, 0, m_comm));
       if(request == finish_request) return;
       const Parameters p = broadcast_parameters(Parameters());
       Complex_vector ignored;
@@ -108,7 +108,7 @@ public:
   void finish() const
   {
     int request = finish_request;
-    MPI_Bcast(&request, 1, MPI_INT, 0, m_comm);
+    CGAL_SMDF_MPI_CALL(MPI_Bcast(&request, 1, MPI_INT, 0, m_comm));
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -152,12 +152,12 @@ private:
 
   void send_request(int request) const
   {
-    MPI_Bcast(&request, 1, MPI_INT, 0, m_comm);
+    CGAL_SMDF_MPI_CALL(MPI_Bcast(&request, 1, MPI_INT, 0, m_comm));
   }
 
   Parameters broadcast_parameters(Parameters p) const
   {
-    MPI_Bcast(&p, sizeof(Parameters) / sizeof(double), MPI_DOUBLE, 0, m_comm);
+    CGAL_SMDF_MPI_CALL(MPI_Bcast(&p, sizeof(Parameters) / sizeof(double), MPI_DOUBLE, 0, m_comm));
     return p;
   }
 
@@ -186,7 +186,7 @@ private:
     {
       normalize(matrices.mass, r.vector);
       result.vector = internal::gather_on_first_process(r.vector);
-      VecDestroy(&r.vector);
+      CGAL_SMDF_PETSC_CALL(VecDestroy(&r.vector));
     }
     matrices.destroy();
     return result;
@@ -196,12 +196,12 @@ private:
   static void normalize(Mat M, Vec x)
   {
     Vec Mx;
-    VecDuplicate(x, &Mx);
-    MatMult(M, x, Mx);
+    CGAL_SMDF_PETSC_CALL(VecDuplicate(x, &Mx));
+    CGAL_SMDF_PETSC_CALL(MatMult(M, x, Mx));
     PetscScalar squared;
-    VecDot(Mx, x, &squared);
-    if(PetscRealPart(squared) > 0.) VecScale(x, 1. / std::sqrt(PetscRealPart(squared)));
-    VecDestroy(&Mx);
+    CGAL_SMDF_PETSC_CALL(VecDot(Mx, x, &squared));
+    if(PetscRealPart(squared) > 0.) CGAL_SMDF_PETSC_CALL(VecScale(x, 1. / std::sqrt(PetscRealPart(squared))));
+    CGAL_SMDF_PETSC_CALL(VecDestroy(&Mx));
   }
 
   // Collective: the solution of the shifted system, whole on the first process.
@@ -232,7 +232,7 @@ private:
                                        internal::flagged_rows(flag_vector), value_vector, estimate, p.tolerance,
                                        iteration_limit(p));
     u = internal::gather_on_first_process(r.solution);
-    for(Vec* v : {&rhs, &flag_vector, &value_vector, &r.solution}) VecDestroy(v);
+    for(Vec* v : {&rhs, &flag_vector, &value_vector, &r.solution}) CGAL_SMDF_PETSC_CALL(VecDestroy(v));
     matrices.destroy();
     internal::Distributed_solve_report report;
     report.converged = r.converged;

@@ -14,6 +14,8 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
+
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_vector.h>
 
@@ -122,19 +124,19 @@ private:
 
     explicit State(MPI_Comm c) : comm(c)
     {
-      MPI_Comm_size(comm, &size);
-      MPI_Comm_rank(comm, &rank);
+      CGAL_SMDF_MPI_CALL(MPI_Comm_size(comm, &size));
+      CGAL_SMDF_MPI_CALL(MPI_Comm_rank(comm, &rank));
     }
     ~State() { clear(); }
 
     void clear()
     {
-      if(to_all) VecScatterDestroy(&to_all);
-      if(all) VecDestroy(&all);
-      if(x) VecDestroy(&x);
-      if(b) VecDestroy(&b);
-      if(ksp) KSPDestroy(&ksp);
-      if(A) MatDestroy(&A);
+      if(to_all) CGAL_SMDF_PETSC_CALL(VecScatterDestroy(&to_all));
+      if(all) CGAL_SMDF_PETSC_CALL(VecDestroy(&all));
+      if(x) CGAL_SMDF_PETSC_CALL(VecDestroy(&x));
+      if(b) CGAL_SMDF_PETSC_CALL(VecDestroy(&b));
+      if(ksp) CGAL_SMDF_PETSC_CALL(KSPDestroy(&ksp));
+      if(A) CGAL_SMDF_PETSC_CALL(MatDestroy(&A));
     }
 
     // The rows [first, last) of this process, from the whole column-major matrix.
@@ -143,7 +145,7 @@ private:
       const PetscInt n = static_cast<PetscInt>(S.rows());
       PetscInt local = PETSC_DECIDE, global = n;
       if(PetscSplitOwnership(comm, &local, &global) != 0) return false;
-      MPI_Scan(&local, &last, 1, MPIU_INT, MPI_SUM, comm);
+      CGAL_SMDF_MPI_CALL(MPI_Scan(&local, &last, 1, MPIU_INT, MPI_SUM, comm));
       first = last - local;
       // the entries of each of this process's rows (column-major input: scan every column)
       std::vector<std::vector<std::pair<PetscInt, NT> > > rows(static_cast<std::size_t>(local));
@@ -161,7 +163,7 @@ private:
         {
           const PetscInt row = first + r, col = e.first;
           const PetscScalar value = e.second;
-          MatSetValues(A, 1, &row, 1, &col, &value, INSERT_VALUES);
+          CGAL_SMDF_PETSC_CALL(MatSetValues(A, 1, &row, 1, &col, &value, INSERT_VALUES));
         }
       return MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY) == 0 && MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY) == 0;
     }
@@ -182,16 +184,16 @@ private:
     {
       if(ksp == nullptr) return false;
       PetscScalar* values;
-      VecGetArray(b, &values);
+      CGAL_SMDF_PETSC_CALL(VecGetArray(b, &values));
       for(PetscInt i = first; i < last; ++i) values[i - first] = B[static_cast<int>(i)];
-      VecRestoreArray(b, &values);
+      CGAL_SMDF_PETSC_CALL(VecRestoreArray(b, &values));
       if(KSPSolve(ksp, b, x) != 0) return false;
-      VecScatterBegin(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD);
-      VecScatterEnd(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD);
+      CGAL_SMDF_PETSC_CALL(VecScatterBegin(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD));
+      CGAL_SMDF_PETSC_CALL(VecScatterEnd(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD));
       const PetscScalar* result;
-      VecGetArrayRead(all, &result);
+      CGAL_SMDF_PETSC_CALL(VecGetArrayRead(all, &result));
       for(int i = 0; i < X.size(); ++i) X[i] = result[i];
-      VecRestoreArrayRead(all, &result);
+      CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(all, &result));
       return true;
     }
   };

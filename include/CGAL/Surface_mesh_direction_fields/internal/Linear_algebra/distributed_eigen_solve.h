@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
 
 #include <slepceps.h>
@@ -80,18 +81,18 @@ struct Distributed_eigen_solve_result
 inline Complex_sparse_matrix local_diagonal_block(Mat S)
 {
   Mat block;
-  MatGetDiagonalBlock(S, &block);
+  CGAL_SMDF_PETSC_CALL(MatGetDiagonalBlock(S, &block));
   PetscInt rows, columns;
-  MatGetSize(block, &rows, &columns);
+  CGAL_SMDF_PETSC_CALL(MatGetSize(block, &rows, &columns));
   std::vector<Eigen::Triplet<Complex> > entries;
   for(PetscInt r = 0; r < rows; ++r)
   {
     PetscInt count;
     const PetscInt* cols;
     const PetscScalar* values;
-    MatGetRow(block, r, &count, &cols, &values);
+    CGAL_SMDF_PETSC_CALL(MatGetRow(block, r, &count, &cols, &values));
     for(PetscInt k = 0; k < count; ++k) entries.emplace_back(r, cols[k], values[k]);
-    MatRestoreRow(block, r, &count, &cols, &values);
+    CGAL_SMDF_PETSC_CALL(MatRestoreRow(block, r, &count, &cols, &values));
   }
   Complex_sparse_matrix result(rows, columns);
   result.setFromTriplets(entries.begin(), entries.end());
@@ -138,11 +139,11 @@ Complex_vector local_eigenvector_estimate(Mat A, Mat M)
 inline Vec vector_like(Mat S, const Complex_vector& local)
 {
   Vec v;
-  MatCreateVecs(S, &v, nullptr);
+  CGAL_SMDF_PETSC_CALL(MatCreateVecs(S, &v, nullptr));
   PetscScalar* values;
-  VecGetArray(v, &values);
+  CGAL_SMDF_PETSC_CALL(VecGetArray(v, &values));
   for(Eigen::Index i = 0; i < local.size(); ++i) values[i] = local[i];
-  VecRestoreArray(v, &values);
+  CGAL_SMDF_PETSC_CALL(VecRestoreArray(v, &values));
   return v;
 }
 
@@ -156,32 +157,32 @@ inline Complex_vector aligned_across_processes(Mat A, Mat M, const Complex_vecto
 {
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
   int processes, rank;
-  MPI_Comm_size(comm, &processes);
-  MPI_Comm_rank(comm, &rank);
+  CGAL_SMDF_MPI_CALL(MPI_Comm_size(comm, &processes));
+  CGAL_SMDF_MPI_CALL(MPI_Comm_rank(comm, &rank));
   if(processes == 1) return local;
   Eigen::MatrixXcd projected_a(processes, processes), projected_m(processes, processes);
   Vec piece, product;
-  MatCreateVecs(A, &piece, &product);
+  CGAL_SMDF_PETSC_CALL(MatCreateVecs(A, &piece, &product));
   for(int s = 0; s < processes; ++s)
   {
     PetscScalar* values;
-    VecGetArray(piece, &values);
+    CGAL_SMDF_PETSC_CALL(VecGetArray(piece, &values));
     for(Eigen::Index i = 0; i < local.size(); ++i) values[i] = rank == s ? local[i] : Complex(0., 0.);
-    VecRestoreArray(piece, &values);
+    CGAL_SMDF_PETSC_CALL(VecRestoreArray(piece, &values));
     for(int which = 0; which < 2; ++which)
     {
-      MatMult(which == 0 ? A : M, piece, product);  // row r of column s: b_r^* (S b_s), summed on process r
+      CGAL_SMDF_PETSC_CALL(MatMult(which == 0 ? A : M, piece, product));  // row r of column s: b_r^* (S b_s), summed on process r
       const PetscScalar* p;
-      VecGetArrayRead(product, &p);
+      CGAL_SMDF_PETSC_CALL(VecGetArrayRead(product, &p));
       Complex mine(0., 0.);
       for(Eigen::Index i = 0; i < local.size(); ++i) mine += std::conj(local[i]) * p[i];
-      VecRestoreArrayRead(product, &p);
+      CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(product, &p));
       Eigen::MatrixXcd& projected = which == 0 ? projected_a : projected_m;
-      MPI_Allgather(&mine, 1, MPI_C_DOUBLE_COMPLEX, projected.col(s).data(), 1, MPI_C_DOUBLE_COMPLEX, comm);
+      CGAL_SMDF_MPI_CALL(MPI_Allgather(&mine, 1, MPI_C_DOUBLE_COMPLEX, projected.col(s).data(), 1, MPI_C_DOUBLE_COMPLEX, comm));
     }
   }
-  VecDestroy(&piece);
-  VecDestroy(&product);
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&piece));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&product));
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> ritz((projected_a + projected_a.adjoint()) / 2.,
                                                                   (projected_m + projected_m.adjoint()) / 2.);
   if(ritz.info() != Eigen::Success) return local;
@@ -192,18 +193,18 @@ inline Complex_vector aligned_across_processes(Mat A, Mat M, const Complex_vecto
 inline void set_near_null_vector(Mat S, Vec near_null)
 {
   MatNullSpace space;
-  MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(S)), PETSC_FALSE, 1, &near_null, &space);
-  MatSetNearNullSpace(S, space);
-  MatNullSpaceDestroy(&space);
+  CGAL_SMDF_PETSC_CALL(MatNullSpaceCreate(PetscObjectComm(reinterpret_cast<PetscObject>(S)), PETSC_FALSE, 1, &near_null, &space));
+  CGAL_SMDF_PETSC_CALL(MatSetNearNullSpace(S, space));
+  CGAL_SMDF_PETSC_CALL(MatNullSpaceDestroy(&space));
 }
 
 // A + epsilon M, with the near-null vector `near_null` for GAMG.
 inline Mat shifted_preconditioner_matrix(Mat A, Mat M, double epsilon, Vec near_null)
 {
   Mat P;
-  MatDuplicate(A, MAT_COPY_VALUES, &P);
-  MatAXPY(P, epsilon, M, SAME_NONZERO_PATTERN);
-  MatSetOption(P, MAT_HERMITIAN, PETSC_TRUE);
+  CGAL_SMDF_PETSC_CALL(MatDuplicate(A, MAT_COPY_VALUES, &P));
+  CGAL_SMDF_PETSC_CALL(MatAXPY(P, epsilon, M, SAME_NONZERO_PATTERN));
+  CGAL_SMDF_PETSC_CALL(MatSetOption(P, MAT_HERMITIAN, PETSC_TRUE));
   set_near_null_vector(P, near_null);
   return P;
 }
@@ -218,33 +219,35 @@ inline Distributed_eigen_solve_result lobpcg_with_multigrid(Mat A, Mat M, Mat P,
   ST st;
   KSP ksp;
   PC pc;
-  EPSCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &eps);
-  EPSSetOperators(eps, A, M);
-  EPSSetProblemType(eps, EPS_GHEP);
-  EPSSetType(eps, EPSLOBPCG);
-  EPSSetWhichEigenpairs(eps, EPS_SMALLEST_REAL);
-  EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT);
-  EPSSetTolerances(eps, options.residual_tolerance, options.max_iterations);
-  EPSGetST(eps, &st);
-  STSetType(st, STPRECOND);
-  STSetPreconditionerMat(st, P);
-  STGetKSP(st, &ksp);
-  KSPSetType(ksp, KSPPREONLY);
-  KSPGetPC(ksp, &pc);
-  PCSetType(pc, PCGAMG);
-  EPSSetInitialSpace(eps, 1, &start);
-  EPSSetFromOptions(eps);
+  CGAL_SMDF_PETSC_CALL(EPSCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &eps));
+  CGAL_SMDF_PETSC_CALL(EPSSetOperators(eps, A, M));
+  CGAL_SMDF_PETSC_CALL(EPSSetProblemType(eps, EPS_GHEP));
+  CGAL_SMDF_PETSC_CALL(EPSSetType(eps, EPSLOBPCG));
+  CGAL_SMDF_PETSC_CALL(EPSSetWhichEigenpairs(eps, EPS_SMALLEST_REAL));
+  CGAL_SMDF_PETSC_CALL(EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT));
+  CGAL_SMDF_PETSC_CALL(EPSSetTolerances(eps, options.residual_tolerance, options.max_iterations));
+  CGAL_SMDF_PETSC_CALL(EPSGetST(eps, &st));
+  CGAL_SMDF_PETSC_CALL(STSetType(st, STPRECOND));
+  CGAL_SMDF_PETSC_CALL(STSetPreconditionerMat(st, P));
+  CGAL_SMDF_PETSC_CALL(STGetKSP(st, &ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetType(ksp, KSPPREONLY));
+  CGAL_SMDF_PETSC_CALL(KSPGetPC(ksp, &pc));
+  CGAL_SMDF_PETSC_CALL(PCSetType(pc, PCGAMG));
+  CGAL_SMDF_PETSC_CALL(EPSSetInitialSpace(eps, 1, &start));
+  CGAL_SMDF_PETSC_CALL(EPSSetFromOptions(eps));
   PetscInt converged = 0;
-  if(EPSSolve(eps) == 0 && EPSGetConverged(eps, &converged) == 0 && converged > 0)
+  CGAL_SMDF_PETSC_CALL(EPSSolve(eps));
+  CGAL_SMDF_PETSC_CALL(EPSGetConverged(eps, &converged));
+  if(converged > 0)
   {
     PetscScalar lambda;
-    MatCreateVecs(A, &result.vector, nullptr);
-    EPSGetEigenpair(eps, 0, &lambda, nullptr, result.vector, nullptr);
+    CGAL_SMDF_PETSC_CALL(MatCreateVecs(A, &result.vector, nullptr));
+    CGAL_SMDF_PETSC_CALL(EPSGetEigenpair(eps, 0, &lambda, nullptr, result.vector, nullptr));
     result.eigenvalue = PetscRealPart(lambda);
     result.converged = true;
   }
-  EPSGetIterationNumber(eps, &result.iterations);
-  EPSDestroy(&eps);
+  CGAL_SMDF_PETSC_CALL(EPSGetIterationNumber(eps, &result.iterations));
+  CGAL_SMDF_PETSC_CALL(EPSDestroy(&eps));
   return result;
 }
 
@@ -254,14 +257,14 @@ inline KSP multigrid_preconditioner(Mat P)
 {
   KSP ksp;
   PC pc;
-  KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(P)), &ksp);
-  KSPSetOperators(ksp, P, P);
-  KSPSetType(ksp, KSPPREONLY);
-  KSPGetPC(ksp, &pc);
-  PCSetType(pc, PCGAMG);
-  KSPSetOptionsPrefix(ksp, "st_");
-  KSPSetFromOptions(ksp);
-  KSPSetUp(ksp);
+  CGAL_SMDF_PETSC_CALL(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(P)), &ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetOperators(ksp, P, P));
+  CGAL_SMDF_PETSC_CALL(KSPSetType(ksp, KSPPREONLY));
+  CGAL_SMDF_PETSC_CALL(KSPGetPC(ksp, &pc));
+  CGAL_SMDF_PETSC_CALL(PCSetType(pc, PCGAMG));
+  CGAL_SMDF_PETSC_CALL(KSPSetOptionsPrefix(ksp, "st_"));
+  CGAL_SMDF_PETSC_CALL(KSPSetFromOptions(ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetUp(ksp));
   return ksp;
 }
 
@@ -279,12 +282,12 @@ public:
   Single_vector_lobpcg(Mat A, Mat M, KSP preconditioner) : m_A(A), m_M(M), m_preconditioner(preconditioner)
   {
     for(Vec* v : {&m_S[0], &m_S[1], &m_S[2], &m_AS[0], &m_AS[1], &m_AS[2], &m_MS[0], &m_MS[1], &m_MS[2], &m_r})
-      MatCreateVecs(A, v, nullptr);
+      CGAL_SMDF_PETSC_CALL(MatCreateVecs(A, v, nullptr));
   }
   ~Single_vector_lobpcg()
   {
     for(Vec* v : {&m_S[0], &m_S[1], &m_S[2], &m_AS[0], &m_AS[1], &m_AS[2], &m_MS[0], &m_MS[1], &m_MS[2], &m_r})
-      VecDestroy(v);
+      CGAL_SMDF_PETSC_CALL(VecDestroy(v));
   }
   Single_vector_lobpcg(const Single_vector_lobpcg&) = delete;
   Single_vector_lobpcg& operator=(const Single_vector_lobpcg&) = delete;
@@ -292,32 +295,32 @@ public:
   Distributed_eigen_solve_result run(Vec start, double scale, const Distributed_eigen_solve_options& options)
   {
     Distributed_eigen_solve_result result;
-    VecCopy(start, m_S[0]);
+    CGAL_SMDF_PETSC_CALL(VecCopy(start, m_S[0]));
     set_products(0);
     normalize(0);
     std::size_t size = 1;  // x, then w, then p once there is a previous step
     for(result.iterations = 0; result.iterations <= options.max_iterations; ++result.iterations)
     {
       result.eigenvalue = PetscRealPart(dot(m_AS[0], m_S[0]));
-      VecWAXPY(m_r, -result.eigenvalue, m_MS[0], m_AS[0]);  // r = A x - lambda M x
+      CGAL_SMDF_PETSC_CALL(VecWAXPY(m_r, -result.eigenvalue, m_MS[0], m_AS[0]));  // r = A x - lambda M x
       PetscReal r_norm, mx_norm;
-      VecNorm(m_r, NORM_2, &r_norm);
-      VecNorm(m_MS[0], NORM_2, &mx_norm);
+      CGAL_SMDF_PETSC_CALL(VecNorm(m_r, NORM_2, &r_norm));
+      CGAL_SMDF_PETSC_CALL(VecNorm(m_MS[0], NORM_2, &mx_norm));
       result.residual = r_norm / (scale * mx_norm);
       if(!(result.residual > options.residual_tolerance))
       {
         result.converged = result.residual <= options.residual_tolerance;
         break;
       }
-      KSPSolve(m_preconditioner, m_r, m_S[1]);  // w
+      CGAL_SMDF_PETSC_CALL(KSPSolve(m_preconditioner, m_r, m_S[1]));  // w
       set_products(1);
       normalize(1);
       size = (std::max)(size, std::size_t(2));
       if(!step(size) && (size < 3 || !step(size = 2))) break;  // without p when the basis is dependent
       size = 3;
     }
-    MatCreateVecs(m_A, &result.vector, nullptr);  // the last iterate, converged or not
-    VecCopy(m_S[0], result.vector);
+    CGAL_SMDF_PETSC_CALL(MatCreateVecs(m_A, &result.vector, nullptr));  // the last iterate, converged or not
+    CGAL_SMDF_PETSC_CALL(VecCopy(m_S[0], result.vector));
     return result;
   }
 
@@ -325,19 +328,19 @@ private:
   PetscScalar dot(Vec a, Vec b) const
   {
     PetscScalar value;
-    VecDot(a, b, &value);  // b^* a
+    CGAL_SMDF_PETSC_CALL(VecDot(a, b, &value));  // b^* a
     return value;
   }
   void set_products(std::size_t k)
   {
-    MatMult(m_A, m_S[k], m_AS[k]);
-    MatMult(m_M, m_S[k], m_MS[k]);
+    CGAL_SMDF_PETSC_CALL(MatMult(m_A, m_S[k], m_AS[k]));
+    CGAL_SMDF_PETSC_CALL(MatMult(m_M, m_S[k], m_MS[k]));
   }
   void normalize(std::size_t k)
   {
     const double norm = std::sqrt((std::max)(0., PetscRealPart(dot(m_MS[k], m_S[k]))));
     if(norm > 0.)
-      for(Vec v : {m_S[k], m_AS[k], m_MS[k]}) VecScale(v, 1. / norm);
+      for(Vec v : {m_S[k], m_AS[k], m_MS[k]}) CGAL_SMDF_PETSC_CALL(VecScale(v, 1. / norm));
   }
   // The Rayleigh-Ritz step on the first `size` basis vectors: x and its
   // products become the best Ritz vector, p the part of it outside x.
@@ -350,9 +353,9 @@ private:
     std::vector<PetscScalar> column(size);
     for(std::size_t j = 0; j < size; ++j)
     {
-      VecMDot(m_AS[j], static_cast<PetscInt>(size), m_S, column.data());  // column[i] = s_i^* A s_j
+      CGAL_SMDF_PETSC_CALL(VecMDot(m_AS[j], static_cast<PetscInt>(size), m_S, column.data()));  // column[i] = s_i^* A s_j
       for(std::size_t i = 0; i < size; ++i) GA(i, j) = column[i];
-      VecMDot(m_MS[j], static_cast<PetscInt>(size), m_S, column.data());
+      CGAL_SMDF_PETSC_CALL(VecMDot(m_MS[j], static_cast<PetscInt>(size), m_S, column.data()));
       for(std::size_t i = 0; i < size; ++i) GM(i, j) = column[i];
     }
     // p shrinks with the residual: measured in units of M-unit vectors, a
@@ -371,11 +374,11 @@ private:
     for(Vec* family : {m_S, m_AS, m_MS})
     {
       if(size == 3)
-        VecScale(family[2], c[2]);
+        CGAL_SMDF_PETSC_CALL(VecScale(family[2], c[2]));
       else
-        VecSet(family[2], 0.);
-      VecAXPY(family[2], c[1], family[1]);
-      VecAXPBY(family[0], 1., c[0], family[2]);
+        CGAL_SMDF_PETSC_CALL(VecSet(family[2], 0.));
+      CGAL_SMDF_PETSC_CALL(VecAXPY(family[2], c[1], family[1]));
+      CGAL_SMDF_PETSC_CALL(VecAXPBY(family[0], 1., c[0], family[2]));
     }
     return true;
   }
@@ -396,22 +399,22 @@ public:
   {
     d = vector_like(S, estimate.unaryExpr([](const Complex& z) { return unit(z); }));
     modulus = vector_like(S, estimate.cwiseAbs().cast<Complex>());
-    VecNormalize(modulus, nullptr);
-    VecDuplicate(d, &d_conjugate);
-    VecCopy(d, d_conjugate);
-    VecConjugate(d_conjugate);
+    CGAL_SMDF_PETSC_CALL(VecNormalize(modulus, nullptr));
+    CGAL_SMDF_PETSC_CALL(VecDuplicate(d, &d_conjugate));
+    CGAL_SMDF_PETSC_CALL(VecCopy(d, d_conjugate));
+    CGAL_SMDF_PETSC_CALL(VecConjugate(d_conjugate));
   }
   ~Gauge()
   {
-    for(Vec* v : {&d, &d_conjugate, &modulus}) VecDestroy(v);
+    for(Vec* v : {&d, &d_conjugate, &modulus}) CGAL_SMDF_PETSC_CALL(VecDestroy(v));
   }
   Gauge(const Gauge&) = delete;
   Gauge& operator=(const Gauge&) = delete;
 
-  void enter(Mat S) const { MatDiagonalScale(S, d_conjugate, d); }  // S <- D^* S D
-  void leave(Mat S) const { MatDiagonalScale(S, d, d_conjugate); }  // S <- D S D^*
-  void enter(Vec v) const { VecPointwiseMult(v, v, d_conjugate); }  // v <- D^* v
-  void leave(Vec v) const { VecPointwiseMult(v, v, d); }            // v <- D v
+  void enter(Mat S) const { CGAL_SMDF_PETSC_CALL(MatDiagonalScale(S, d_conjugate, d)); }  // S <- D^* S D
+  void leave(Mat S) const { CGAL_SMDF_PETSC_CALL(MatDiagonalScale(S, d, d_conjugate)); }  // S <- D S D^*
+  void enter(Vec v) const { CGAL_SMDF_PETSC_CALL(VecPointwiseMult(v, v, d_conjugate)); }  // v <- D^* v
+  void leave(Vec v) const { CGAL_SMDF_PETSC_CALL(VecPointwiseMult(v, v, d)); }            // v <- D v
 
   Vec d = nullptr, d_conjugate = nullptr, modulus = nullptr;
 };
@@ -420,8 +423,8 @@ public:
 inline double distributed_eigenvalue_scale(Mat A, Mat M)
 {
   PetscScalar trace_a, trace_m;
-  MatGetTrace(A, &trace_a);
-  MatGetTrace(M, &trace_m);
+  CGAL_SMDF_PETSC_CALL(MatGetTrace(A, &trace_a));
+  CGAL_SMDF_PETSC_CALL(MatGetTrace(M, &trace_m));
   return PetscRealPart(trace_a) / PetscRealPart(trace_m);
 }
 
@@ -445,12 +448,12 @@ inline Distributed_eigen_solve_result smallest_eigenpair_in_gauge(Mat A, Mat M, 
     KSP preconditioner = multigrid_preconditioner(P);
     Single_vector_lobpcg lobpcg(A, M, preconditioner);
     result = lobpcg.run(gauge.modulus, scale, options);
-    KSPDestroy(&preconditioner);
+    CGAL_SMDF_PETSC_CALL(KSPDestroy(&preconditioner));
   }
   if(result.vector) gauge.leave(result.vector);
   gauge.leave(A);
   gauge.leave(M);
-  MatDestroy(&P);
+  CGAL_SMDF_PETSC_CALL(MatDestroy(&P));
   return result;
 }
 
@@ -468,11 +471,11 @@ Distributed_eigen_solve_result distributed_smallest_eigenpair(Mat A, Mat M, cons
   if(first.residual <= options.residual_tolerance || !first.vector) return first;
   const PetscScalar* values;
   PetscInt size;
-  VecGetLocalSize(first.vector, &size);
-  VecGetArrayRead(first.vector, &values);
+  CGAL_SMDF_PETSC_CALL(VecGetLocalSize(first.vector, &size));
+  CGAL_SMDF_PETSC_CALL(VecGetArrayRead(first.vector, &values));
   const Complex_vector better = Eigen::Map<const Complex_vector>(values, size);
-  VecRestoreArrayRead(first.vector, &values);
-  VecDestroy(&first.vector);
+  CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(first.vector, &values));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&first.vector));
   Distributed_eigen_solve_result result = smallest_eigenpair_in_gauge(A, M, better, options);
   result.iterations += first.iterations;
   return result;
@@ -483,18 +486,18 @@ inline Complex_vector gather_on_first_process(Vec x)
 {
   VecScatter to_zero;
   Vec all;
-  VecScatterCreateToZero(x, &to_zero, &all);
-  VecScatterBegin(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD);
-  VecScatterEnd(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD);
+  CGAL_SMDF_PETSC_CALL(VecScatterCreateToZero(x, &to_zero, &all));
+  CGAL_SMDF_PETSC_CALL(VecScatterBegin(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD));
+  CGAL_SMDF_PETSC_CALL(VecScatterEnd(to_zero, x, all, INSERT_VALUES, SCATTER_FORWARD));
   PetscInt size;
-  VecGetLocalSize(all, &size);
+  CGAL_SMDF_PETSC_CALL(VecGetLocalSize(all, &size));
   Complex_vector result(static_cast<Eigen::Index>(size));
   const PetscScalar* values;
-  VecGetArrayRead(all, &values);
+  CGAL_SMDF_PETSC_CALL(VecGetArrayRead(all, &values));
   for(PetscInt i = 0; i < size; ++i) result[static_cast<Eigen::Index>(i)] = values[i];
-  VecRestoreArrayRead(all, &values);
-  VecScatterDestroy(&to_zero);
-  VecDestroy(&all);
+  CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(all, &values));
+  CGAL_SMDF_PETSC_CALL(VecScatterDestroy(&to_zero));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&all));
   return result;
 }
 

@@ -37,18 +37,18 @@ inline Vec scattered_from_first_process(Mat S, const Complex_vector& whole)
 {
   Vec v, all;
   VecScatter to_zero;
-  MatCreateVecs(S, &v, nullptr);
-  VecScatterCreateToZero(v, &to_zero, &all);
+  CGAL_SMDF_PETSC_CALL(MatCreateVecs(S, &v, nullptr));
+  CGAL_SMDF_PETSC_CALL(VecScatterCreateToZero(v, &to_zero, &all));
   PetscInt size;
-  VecGetLocalSize(all, &size);
+  CGAL_SMDF_PETSC_CALL(VecGetLocalSize(all, &size));
   PetscScalar* values;
-  VecGetArray(all, &values);
+  CGAL_SMDF_PETSC_CALL(VecGetArray(all, &values));
   for(PetscInt i = 0; i < size; ++i) values[i] = whole[static_cast<Eigen::Index>(i)];
-  VecRestoreArray(all, &values);
-  VecScatterBegin(to_zero, all, v, INSERT_VALUES, SCATTER_REVERSE);
-  VecScatterEnd(to_zero, all, v, INSERT_VALUES, SCATTER_REVERSE);
-  VecScatterDestroy(&to_zero);
-  VecDestroy(&all);
+  CGAL_SMDF_PETSC_CALL(VecRestoreArray(all, &values));
+  CGAL_SMDF_PETSC_CALL(VecScatterBegin(to_zero, all, v, INSERT_VALUES, SCATTER_REVERSE));
+  CGAL_SMDF_PETSC_CALL(VecScatterEnd(to_zero, all, v, INSERT_VALUES, SCATTER_REVERSE));
+  CGAL_SMDF_PETSC_CALL(VecScatterDestroy(&to_zero));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&all));
   return v;
 }
 
@@ -64,13 +64,13 @@ struct Distributed_linear_solve_result
 inline std::vector<PetscInt> flagged_rows(Vec flags)
 {
   PetscInt first, last;
-  VecGetOwnershipRange(flags, &first, &last);
+  CGAL_SMDF_PETSC_CALL(VecGetOwnershipRange(flags, &first, &last));
   const PetscScalar* values;
-  VecGetArrayRead(flags, &values);
+  CGAL_SMDF_PETSC_CALL(VecGetArrayRead(flags, &values));
   std::vector<PetscInt> rows;
   for(PetscInt i = first; i < last; ++i)
     if(values[i - first] != PetscScalar(0.)) rows.push_back(i);
-  VecRestoreArrayRead(flags, &values);
+  CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(flags, &values));
   return rows;
 }
 
@@ -88,12 +88,12 @@ inline Distributed_linear_solve_result shifted_solve_in_gauge(Mat A, Mat M, doub
 {
   Mat K;
   Vec rhs;
-  MatDuplicate(A, MAT_COPY_VALUES, &K);
-  MatAXPY(K, -lambda, M, SAME_NONZERO_PATTERN);
-  VecDuplicate(b, &rhs);
-  VecCopy(b, rhs);
-  MatZeroRowsColumns(K, static_cast<PetscInt>(constrained_rows.size()), constrained_rows.data(), 1., values, rhs);
-  MatSetOption(K, MAT_HERMITIAN, PETSC_TRUE);
+  CGAL_SMDF_PETSC_CALL(MatDuplicate(A, MAT_COPY_VALUES, &K));
+  CGAL_SMDF_PETSC_CALL(MatAXPY(K, -lambda, M, SAME_NONZERO_PATTERN));
+  CGAL_SMDF_PETSC_CALL(VecDuplicate(b, &rhs));
+  CGAL_SMDF_PETSC_CALL(VecCopy(b, rhs));
+  CGAL_SMDF_PETSC_CALL(MatZeroRowsColumns(K, static_cast<PetscInt>(constrained_rows.size()), constrained_rows.data(), 1., values, rhs));
+  CGAL_SMDF_PETSC_CALL(MatSetOption(K, MAT_HERMITIAN, PETSC_TRUE));
   const Gauge gauge(A, estimate);
   gauge.enter(K);
   gauge.enter(rhs);
@@ -101,35 +101,35 @@ inline Distributed_linear_solve_result shifted_solve_in_gauge(Mat A, Mat M, doub
 
   KSP ksp;
   PC pc;
-  KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &ksp);
-  KSPSetOperators(ksp, K, K);
-  KSPSetType(ksp, KSPCG);
-  KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED);
-  KSPSetTolerances(ksp, tolerance, PETSC_DEFAULT, PETSC_DEFAULT, max_iterations);
-  KSPGetPC(ksp, &pc);
-  PCSetType(pc, PCGAMG);
+  CGAL_SMDF_PETSC_CALL(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetOperators(ksp, K, K));
+  CGAL_SMDF_PETSC_CALL(KSPSetType(ksp, KSPCG));
+  CGAL_SMDF_PETSC_CALL(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+  CGAL_SMDF_PETSC_CALL(KSPSetTolerances(ksp, tolerance, PETSC_DEFAULT, PETSC_DEFAULT, max_iterations));
+  CGAL_SMDF_PETSC_CALL(KSPGetPC(ksp, &pc));
+  CGAL_SMDF_PETSC_CALL(PCSetType(pc, PCGAMG));
   // Unsmoothed aggregation: smoothing the prolongation with the complex
   // matrix makes it complex, and PETSc's coarse operator P^T K P is then not
   // Hermitian, nor is the preconditioner: conjugate gradients broke down on 4
   // processes (plane_holes.off, constrained boundary). The aggregates' own
   // prolongation, built from the real near-null vector, stays real.
-  PCGAMGSetNSmooths(pc, 0);
-  KSPSetFromOptions(ksp);
+  CGAL_SMDF_PETSC_CALL(PCGAMGSetNSmooths(pc, 0));
+  CGAL_SMDF_PETSC_CALL(KSPSetFromOptions(ksp));
   Distributed_linear_solve_result result;
-  VecDuplicate(b, &result.solution);
-  KSPSolve(ksp, rhs, result.solution);
+  CGAL_SMDF_PETSC_CALL(VecDuplicate(b, &result.solution));
+  CGAL_SMDF_PETSC_CALL(KSPSolve(ksp, rhs, result.solution));
   KSPConvergedReason reason;
-  KSPGetConvergedReason(ksp, &reason);
-  KSPGetIterationNumber(ksp, &result.iterations);
+  CGAL_SMDF_PETSC_CALL(KSPGetConvergedReason(ksp, &reason));
+  CGAL_SMDF_PETSC_CALL(KSPGetIterationNumber(ksp, &result.iterations));
   PetscReal residual_norm, rhs_norm;
-  KSPGetResidualNorm(ksp, &residual_norm);
-  VecNorm(rhs, NORM_2, &rhs_norm);
+  CGAL_SMDF_PETSC_CALL(KSPGetResidualNorm(ksp, &residual_norm));
+  CGAL_SMDF_PETSC_CALL(VecNorm(rhs, NORM_2, &rhs_norm));
   result.residual = rhs_norm > 0. ? residual_norm / rhs_norm : 0.;
   result.converged = reason > 0;
   gauge.leave(result.solution);
-  KSPDestroy(&ksp);
-  VecDestroy(&rhs);
-  MatDestroy(&K);
+  CGAL_SMDF_PETSC_CALL(KSPDestroy(&ksp));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&rhs));
+  CGAL_SMDF_PETSC_CALL(MatDestroy(&K));
   return result;
 }
 

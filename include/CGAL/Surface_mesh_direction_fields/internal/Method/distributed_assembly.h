@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
@@ -146,8 +147,8 @@ inline void add_local_matrices(const std::vector<Face_record>& records, double m
       energy[3 * j + k] = std::conj(lm.energy_pair[c]);
       mass[3 * j + k] = std::conj(lm.mass_pair[c]);
     }
-    MatSetValues(A, 3, rows, 3, rows, energy, ADD_VALUES);
-    MatSetValues(M, 3, rows, 3, rows, mass, ADD_VALUES);
+    CGAL_SMDF_PETSC_CALL(MatSetValues(A, 3, rows, 3, rows, energy, ADD_VALUES));
+    CGAL_SMDF_PETSC_CALL(MatSetValues(M, 3, rows, 3, rows, mass, ADD_VALUES));
   }
 }
 
@@ -161,7 +162,7 @@ inline void send_faces(MPI_Comm comm, const Assembly_source& source, const std::
                        double s, Mat A, Mat M)
 {
   int processes;
-  MPI_Comm_size(comm, &processes);
+  CGAL_SMDF_MPI_CALL(MPI_Comm_size(comm, &processes));
   const Component& comp = *source.component;
   std::vector<std::vector<Compact_index> > faces_of(static_cast<std::size_t>(processes));
   for(std::size_t f : comp.faces)
@@ -183,7 +184,7 @@ inline void send_faces(MPI_Comm comm, const Assembly_source& source, const std::
       if(p == 0)
         add_local_matrices(records, source.tangent_spaces->mollification, s, A, M);
       else
-        MPI_Send(records.data(), static_cast<int>(records.size() * sizeof(Face_record)), MPI_BYTE, p, 0, comm);
+        CGAL_SMDF_MPI_CALL(MPI_Send(records.data(), static_cast<int>(records.size() * sizeof(Face_record)), MPI_BYTE, p, 0, comm));
       if(end == faces.size() && (p == 0 || records.empty())) break;
     }
   }
@@ -199,11 +200,11 @@ inline void receive_faces(MPI_Comm comm, double mollification, double s, Mat A, 
   for(;;)
   {
     MPI_Status status;
-    MPI_Probe(0, 0, comm, &status);
+    CGAL_SMDF_MPI_CALL(MPI_Probe(0, 0, comm, &status));
     int bytes = 0;
-    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    CGAL_SMDF_MPI_CALL(MPI_Get_count(&status, MPI_BYTE, &bytes));
     pieces.emplace_back(static_cast<std::size_t>(bytes) / sizeof(Face_record));
-    MPI_Recv(pieces.back().data(), bytes, MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE);
+    CGAL_SMDF_MPI_CALL(MPI_Recv(pieces.back().data(), bytes, MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE));
     if(pieces.back().empty()) break;
   }
   for(std::vector<Face_record>& piece : pieces)
@@ -220,8 +221,8 @@ struct Distributed_matrices
   std::size_t cut_edges = 0;  // edges between vertices of different processes (on rank 0)
   void destroy()
   {
-    if(energy) MatDestroy(&energy);
-    if(mass) MatDestroy(&mass);
+    if(energy) CGAL_SMDF_PETSC_CALL(MatDestroy(&energy));
+    if(mass) CGAL_SMDF_PETSC_CALL(MatDestroy(&mass));
   }
 };
 
@@ -230,8 +231,8 @@ struct Distributed_matrices
 inline Distributed_matrices assemble_distributed(MPI_Comm comm, const Assembly_source& source, double s)
 {
   int rank, processes;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &processes);
+  CGAL_SMDF_MPI_CALL(MPI_Comm_rank(comm, &rank));
+  CGAL_SMDF_MPI_CALL(MPI_Comm_size(comm, &processes));
   Distributed_matrices result;
   double mollification = 0.;
   if(rank == 0)
@@ -239,8 +240,8 @@ inline Distributed_matrices assemble_distributed(MPI_Comm comm, const Assembly_s
     result.rows = static_cast<std::int64_t>(source.component->vertices.size());
     mollification = source.tangent_spaces->mollification;
   }
-  MPI_Bcast(&result.rows, 1, MPI_INT64_T, 0, comm);
-  MPI_Bcast(&mollification, 1, MPI_DOUBLE, 0, comm);
+  CGAL_SMDF_MPI_CALL(MPI_Bcast(&result.rows, 1, MPI_INT64_T, 0, comm));
+  CGAL_SMDF_MPI_CALL(MPI_Bcast(&mollification, 1, MPI_DOUBLE, 0, comm));
   const std::vector<std::int64_t> first = row_ranges(result.rows, processes);
   const int local_rows = static_cast<int>(first[static_cast<std::size_t>(rank) + 1] - first[static_cast<std::size_t>(rank)]);
 
@@ -258,23 +259,23 @@ inline Distributed_matrices assemble_distributed(MPI_Comm comm, const Assembly_s
     }
   }
   std::vector<PetscInt> my_in(static_cast<std::size_t>(local_rows)), my_out(static_cast<std::size_t>(local_rows));
-  MPI_Scatterv(in_range.data(), counts.data(), offsets.data(), MPIU_INT, my_in.data(), local_rows, MPIU_INT, 0, comm);
-  MPI_Scatterv(out_of_range.data(), counts.data(), offsets.data(), MPIU_INT, my_out.data(), local_rows, MPIU_INT, 0, comm);
+  CGAL_SMDF_MPI_CALL(MPI_Scatterv(in_range.data(), counts.data(), offsets.data(), MPIU_INT, my_in.data(), local_rows, MPIU_INT, 0, comm));
+  CGAL_SMDF_MPI_CALL(MPI_Scatterv(out_of_range.data(), counts.data(), offsets.data(), MPIU_INT, my_out.data(), local_rows, MPIU_INT, 0, comm));
   std::vector<PetscInt>().swap(in_range);
   std::vector<PetscInt>().swap(out_of_range);
 
   const PetscInt n = static_cast<PetscInt>(result.rows);
   for(Mat* S : {&result.energy, &result.mass})
-    MatCreateAIJ(comm, local_rows, local_rows, n, n, 0, my_in.data(), 0, my_out.data(), S);
+    CGAL_SMDF_PETSC_CALL(MatCreateAIJ(comm, local_rows, local_rows, n, n, 0, my_in.data(), 0, my_out.data(), S));
   if(rank == 0)
     send_faces(comm, source, first, s, result.energy, result.mass);
   else
     receive_faces(comm, mollification, s, result.energy, result.mass);
   for(Mat S : {result.energy, result.mass})
   {
-    MatAssemblyBegin(S, MAT_FINAL_ASSEMBLY);
-    MatAssemblyEnd(S, MAT_FINAL_ASSEMBLY);
-    MatSetOption(S, MAT_HERMITIAN, PETSC_TRUE);
+    CGAL_SMDF_PETSC_CALL(MatAssemblyBegin(S, MAT_FINAL_ASSEMBLY));
+    CGAL_SMDF_PETSC_CALL(MatAssemblyEnd(S, MAT_FINAL_ASSEMBLY));
+    CGAL_SMDF_PETSC_CALL(MatSetOption(S, MAT_HERMITIAN, PETSC_TRUE));
   }
   return result;
 }
