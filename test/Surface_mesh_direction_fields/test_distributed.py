@@ -128,4 +128,15 @@ for petsc_options, extra, what in (("-st_pc_type nonsense", [], "the eigen-solve
               and not os.path.exists(target) and "Traceback" not in r.stderr and "[0]PETSC ERROR" not in r.stderr,
               "%s refused (%s), %d processes: status %d, lines %r" % (petsc_options, what, ranks, r.returncode, lines[:2]))
 
+# what PETSc does at its end fails (-log_view into a missing folder): status
+# 1, the program's one line, no JSON on stdout and no output renamed into place
+for ranks in (1, 2):
+    target = os.path.join(OUT, "log_view_%d.txt" % ranks)
+    r = subprocess.run([MPIEXEC, "-np", str(ranks), BIN, two_parts, "--solver", "petsc", "--distribute-from", "0", "--json",
+                        "--directions", target, "--petsc-options", "-log_view :" + os.path.join(OUT, "missing", "log")],
+                       capture_output=True, text=True, env=ENV, timeout=300)
+    check(r.returncode != 0 and r.stdout == "" and not os.path.exists(target)
+          and r.stderr.count("direction_field: error: PETSc failed at its end") == 1,
+          "-log_view that cannot write, %d processes: status %d, stdout %r, stderr %r" % (ranks, r.returncode, r.stdout[:80], r.stderr[:200]))
+
 check.finish()

@@ -169,7 +169,21 @@ public:
 #ifdef SMDF_WITH_PETSC
     if(m_solver && m_rank == 0) m_solver->finish();  // the others return from serve()
     m_solver.reset();
-    if(m_petsc) SlepcFinalize();
+    if(m_petsc) SlepcFinalize();  // after an error: its own failure adds nothing
+#endif
+  }
+  // Ends PETSc once the field is computed, before any output is committed:
+  // what PETSc does at its end (writing -log_view's file, for one) can fail,
+  // and then the run fails.
+  void finish()
+  {
+#ifdef SMDF_WITH_PETSC
+    if(!m_petsc) return;
+    if(m_solver && m_rank == 0) m_solver->finish();
+    m_solver.reset();
+    m_petsc = false;
+    if(SlepcFinalize() != 0)
+      throw std::runtime_error("PETSc failed at its end (an option such as -log_view could not write its file?)");
 #endif
   }
   Processes(const Processes&) = delete;
@@ -385,10 +399,11 @@ static int run(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
-    const Processes processes(o);
+    Processes processes(o);
     if(!processes.writes())
     {
       processes.serve();
+      processes.finish();
       return EXIT_SUCCESS;
     }
     Output_files outputs;
@@ -407,6 +422,7 @@ static int run(int argc, char** argv)
     double compute_ms = 0.;
     progress.begin("computing the field", compute_ms);
     compute_field(o, input, processes, field);
+    processes.finish();
     progress.end();
     report_computation(progress, field.result);
     progress.begin("writing", timings.write);
