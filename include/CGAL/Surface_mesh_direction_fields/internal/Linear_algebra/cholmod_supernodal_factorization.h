@@ -142,6 +142,8 @@ public:
     m_common.final_asis = 1;
     m_default_first_ordering = m_common.method[0].ordering;
   }
+  // (a destructor cannot report CHOLMOD's status: freeing fails only with
+  // an invalid workspace, which the constructor's check excludes)
   ~Cholmod_supernodal_factorization()
   {
     if(m_factor) cholmod_free_factor(&m_factor, &m_common);
@@ -160,8 +162,7 @@ public:
   void analyze_pattern(const Complex_sparse_matrix& lower)
   {
     analyze(lower);
-    m_pending_starts.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.outerSize() + 1);
-    m_pending_rows.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+    m_pending.record(lower);
   }
 
   // Factors the matrix whose lower triangle is `lower` (compressed). Returns
@@ -186,7 +187,7 @@ public:
     cholmod_dense* x = cholmod_solve(CHOLMOD_A, m_factor, &b, &m_common);
     check_status(x != nullptr, "solving with the factor");
     Complex_dense_matrix X = Eigen::Map<const Complex_dense_matrix>(static_cast<const Complex*>(x->x), B.rows(), B.cols());
-    cholmod_free_dense(&x, &m_common);
+    check_status(cholmod_free_dense(&x, &m_common) != 0, "freeing a solution");
     return finite(std::move(X));
   }
 
@@ -239,25 +240,14 @@ private:
   // structure is new.
   bool prepare_analysis(const Complex_sparse_matrix& lower, bool same_pattern)
   {
-    if(!m_pending_starts.empty())
+    if(m_pending.pending())
     {
-      const bool matches = has_pending_pattern(lower);
-      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_starts);
-      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_rows);
-      if(!matches) analyze(lower);
+      if(!m_pending.take_and_compare(lower)) analyze(lower);
       return true;
     }
     if(same_pattern && m_analyzed && m_factor) return false;
     analyze(lower);
     return true;
-  }
-
-  bool has_pending_pattern(const Complex_sparse_matrix& S) const
-  {
-    return S.isCompressed() && static_cast<std::size_t>(S.outerSize()) + 1 == m_pending_starts.size() &&
-           static_cast<std::size_t>(S.nonZeros()) == m_pending_rows.size() &&
-           std::equal(m_pending_starts.begin(), m_pending_starts.end(), S.outerIndexPtr()) &&
-           std::equal(m_pending_rows.begin(), m_pending_rows.end(), S.innerIndexPtr());
   }
 
   bool factor_numerically(const Complex_sparse_matrix& lower, bool new_structure, bool single_allowed)
@@ -374,8 +364,7 @@ private:
   bool m_analyzed = false, m_package_factorization_allowed = true;
   bool m_blas_usable = true;  // blas_work_space_available() at the last factorization
   int m_default_first_ordering = 0;
-  // the compressed pattern that analyze_pattern() analyzed, until a factorization checks it
-  std::vector<Complex_sparse_matrix::StorageIndex> m_pending_starts, m_pending_rows;
+  Pending_pattern m_pending;  // the pattern analyze_pattern() analyzed, until a factorization checks it
 
   Supernodal_factor_view<int> m_view;
   std::unique_ptr<Supernodal_solve_plan> m_plan;  // kept while the analysis is

@@ -259,17 +259,15 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
   bool m_new_structure = false;
   // the compressed pattern (column starts, rows) of the matrix to factor
   // that analyze_pattern() analyzed, until a factorization checks it
-  std::vector<Complex_sparse_matrix::StorageIndex> m_pending_starts, m_pending_rows;
+  Pending_pattern m_pending;
 
   void analyze(const Complex_sparse_matrix& S, bool same_pattern)
   {
-    if(!m_pending_starts.empty())
+    if(m_pending.pending())
     {
       // the first factorization after analyze_pattern(): its analysis is
       // used if S has exactly that pattern, and redone otherwise
-      const bool matches = has_pending_pattern(S);
-      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_starts);
-      std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_pending_rows);
+      const bool matches = m_pending.take_and_compare(S);
       m_new_structure = true;
       if(matches) return;
       same_pattern = false;
@@ -278,14 +276,6 @@ class Factored_matrix<CGAL::Eigen_solver_traits<EigenSolver>,
     if(m_new_structure)
       m_traits.solver().analyzePattern(S);
     m_analyzed = true;
-  }
-
-  bool has_pending_pattern(const Complex_sparse_matrix& S) const
-  {
-    return S.isCompressed() && static_cast<std::size_t>(S.outerSize()) + 1 == m_pending_starts.size() &&
-           static_cast<std::size_t>(S.nonZeros()) == m_pending_rows.size() &&
-           std::equal(m_pending_starts.begin(), m_pending_starts.end(), S.outerIndexPtr()) &&
-           std::equal(m_pending_rows.begin(), m_pending_rows.end(), S.innerIndexPtr());
   }
 
   // Returns whether S was factored; a `trial` also requires positive pivots
@@ -330,8 +320,7 @@ public:
   {
     const Complex_sparse_matrix S = matrix_to_factor(pattern, pattern, 0.);
     m_traits.solver().analyzePattern(S);
-    m_pending_starts.assign(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
-    m_pending_rows.assign(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+    m_pending.record(S);
     m_analyzed = true;
   }
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <vector>
 
 // The types of the linear-algebra layer (internal/Linear_algebra/): complex
 // coefficients, vectors and matrices. The layer works on these alone and
@@ -50,6 +51,33 @@ inline double eigenvalue_scale(const Complex_sparse_matrix& A, const Complex_spa
 {
   return A.diagonal().real().sum() / M.diagonal().real().sum();
 }
+
+// The compressed pattern of a matrix analyzed ahead of its factorization
+// (analyze_pattern() of the factorizations), kept until the first
+// factorization checks that its matrix has exactly that pattern.
+class Pending_pattern
+{
+  std::vector<Complex_sparse_matrix::StorageIndex> m_starts, m_rows;
+
+public:
+  void record(const Complex_sparse_matrix& S)
+  {
+    m_starts.assign(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
+    m_rows.assign(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+  }
+  bool pending() const { return !m_starts.empty(); }
+  // whether S has the recorded pattern; the record is forgotten
+  bool take_and_compare(const Complex_sparse_matrix& S)
+  {
+    const bool matches = S.isCompressed() && static_cast<std::size_t>(S.outerSize()) + 1 == m_starts.size() &&
+                         static_cast<std::size_t>(S.nonZeros()) == m_rows.size() &&
+                         std::equal(m_starts.begin(), m_starts.end(), S.outerIndexPtr()) &&
+                         std::equal(m_rows.begin(), m_rows.end(), S.innerIndexPtr());
+    std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_starts);
+    std::vector<Complex_sparse_matrix::StorageIndex>().swap(m_rows);
+    return matches;
+  }
+};
 
 } // namespace internal
 } // namespace Surface_mesh_direction_fields
