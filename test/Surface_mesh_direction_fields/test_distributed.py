@@ -139,4 +139,73 @@ for ranks in (1, 2):
           and r.stderr.count("direction_field: error: PETSc failed at its end") == 1,
           "-log_view that cannot write, %d processes: status %d, stdout %r, stderr %r" % (ranks, r.returncode, r.stdout[:80], r.stderr[:200]))
 
+# a negative iteration limit of the linear solves, which PETSc takes and
+# then stops at once: refused by name; a positive limit too small: the solve's
+# failure, not the given lambda_t's (there is none)
+plane_holes = os.path.join(SHARED, "plane_holes.off") if SHARED else ""
+if os.path.exists(plane_holes):
+    for ranks in (1, 2):
+        for limit, expected in (("-5", "-ksp_max_it must be at least 1 (got -5)"),
+                                ("2", "direction_field: error: the linear solve of component 0 did not converge")):
+            r = subprocess.run([MPIEXEC, "-np", str(ranks), BIN, plane_holes, "--solver", "petsc", "--distribute-from", "0",
+                                "--constrain-boundary", "tangent", "--petsc-options", "-ksp_max_it " + limit],
+                               capture_output=True, text=True, env=ENV, timeout=300)
+            check(r.returncode != 0 and expected in r.stderr and "alignment_lambda" not in r.stderr,
+                  "-ksp_max_it %s, %d processes: status %d, %r" % (limit, ranks, r.returncode, r.stderr[:200]))
+else:
+    print("SKIPPED -ksp_max_it: no shared meshes")
+
+
+def launched_with(wrapper_body, tag):
+    """A launcher script for mpirun: runs the program as the body says for
+    the process of rank 1 (OMPI_COMM_WORLD_RANK, PMI_RANK), plainly for the others."""
+    path = os.path.join(OUT, tag + ".sh")
+    with open(path, "w") as f:
+        f.write('#!/bin/sh\nrank="${OMPI_COMM_WORLD_RANK:-$PMI_RANK}"\n' + wrapper_body)
+    os.chmod(path, 0o755)
+    return path
+
+
+# a process out of memory (an address-space limit on one rank) or killed
+# mid-run: every process ends, the status is not 0, no output is renamed
+# into place; out of memory is said in one line naming the process
+large = os.path.join(SHARED, "nefertiti_sub4.off") if SHARED else ""
+if os.path.exists(large):
+    for limited_rank in ("0", "1"):
+        failures = 0
+        for megabytes in (350, 400, 500, 600):
+            launcher = launched_with('if [ "$rank" = "%s" ]; then exec prlimit --as=%d "$@"; fi\nexec "$@"\n'
+                                     % (limited_rank, megabytes * 1000000), "limit")
+            target = os.path.join(OUT, "limited.txt")
+            try:
+                r = subprocess.run([MPIEXEC, "-np", "2", launcher, BIN, large, "--solver", "petsc", "--distribute-from", "0",
+                                    "--json", "--directions", target], capture_output=True, text=True, env=ENV, timeout=240)
+            except subprocess.TimeoutExpired:
+                check(False, "rank %s limited to %d MB: no end in 240 s" % (limited_rank, megabytes))
+                continue
+            said = [l for l in r.stderr.splitlines() if "out of memory" in l]
+            if r.returncode == 0:
+                check(json.loads(r.stdout)["singular_faces"] > 0 and os.path.exists(target),
+                      "rank %s limited to %d MB: a result" % (limited_rank, megabytes))
+            else:
+                failures += 1
+                check(r.stdout == "" and not os.path.exists(target) and len(said) == 1,
+                      "rank %s limited to %d MB: status %d, lines %r" % (limited_rank, megabytes, r.returncode, said))
+            if os.path.exists(target):
+                os.remove(target)
+        check(failures > 0, "rank %s: some limit too small for the run (the sweep reaches the failing paths)" % limited_rank)
+    target = os.path.join(OUT, "killed.txt")
+    for seconds in ("0.5", "1.2", "1.8"):
+        launcher = launched_with('if [ "$rank" = "1" ]; then exec timeout -s KILL %s "$@"; fi\nexec "$@"\n' % seconds,
+                                 "kill")
+        try:
+            r = subprocess.run([MPIEXEC, "-np", "2", launcher, BIN, large, "--solver", "petsc", "--distribute-from", "0",
+                                "--json", "--directions", target], capture_output=True, text=True, env=ENV, timeout=240)
+            check(r.returncode != 0 and r.stdout == "" and not os.path.exists(target),
+                  "rank 1 killed after %s s: status %d, stdout %r" % (seconds, r.returncode, r.stdout[:80]))
+        except subprocess.TimeoutExpired:
+            check(False, "rank 1 killed after %s s: no end in 240 s" % seconds)
+else:
+    print("SKIPPED a process out of memory or killed: no shared meshes")
+
 check.finish()

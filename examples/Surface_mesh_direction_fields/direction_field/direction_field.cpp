@@ -153,7 +153,7 @@ public:
     m_petsc = true;
     // PETSc's errors are reported in one line by the failing process, which
     // then ends every process (petsc_calls.h): no trace from inside PETSc
-    if(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr) != 0)
+    if(PetscPushErrorHandler(SMDF::Petsc_distributed_solver::error_handler, nullptr) != 0)
       throw Usage_error("--solver petsc: PETSc's error handler could not be set");
     if(PetscOptionsInsertString(nullptr, o.petsc_options.c_str()) != 0)
       throw Usage_error("--petsc-options: PETSc does not accept '" + o.petsc_options + "'");

@@ -812,13 +812,7 @@ private:
       const bool below_bound = certifies_definiteness(c) || !aligned || lambda < report.eigenvalue;
       if(!below_bound ||
          !solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, user_solver, linear_solver, timings, u))
-      {
-        if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, options, user_solver, report, timings);
-        throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " +
-                                  internal::compact_number(eigenvalue_to_user(report.eigenvalue)) + " of component " +
-                                  std::to_string(c) + " (got " + internal::compact_number(eigenvalue_to_user(lambda)) +
-                                  ")");
-      }
+        refuse_lambda(c, lambda, options, user_solver, report, timings);
     }
     report.lambda = lambda;
     if(std::isnan(u_mass)) u_mass = u.dot(mass_times(c, u)).real();
@@ -826,6 +820,24 @@ private:
     report.alignment_weight = aligned ? 1. / (1. + u_norm) : 0.;  // as internal::alignment_weight_of()
     if(u_norm > 0.) u /= u_norm;
     return u;
+  }
+
+  // After a failed solve with lambda_t: lambda_t is not below lambda_1,
+  // unless the solver cannot tell a matrix that is not positive definite
+  // and lambda_t is below lambda_1 (an iterative solve that stopped
+  // unconverged: the solver's failure, not the input's).
+  [[noreturn]] void refuse_lambda(std::size_t c, double lambda, const internal::Eigen_solve_options& options,
+                                  bool user_solver, Component_report& report, Direction_field_timings& timings)
+  {
+    if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, options, user_solver, report, timings);
+    const std::string lambda_1 = internal::compact_number(eigenvalue_to_user(report.eigenvalue));
+    if(!certifies_definiteness(c) && lambda < report.eigenvalue)
+      throw Solver_failure_error("the linear solve of component " + std::to_string(c) +
+                                 " did not converge (A - lambda_t M is positive definite: lambda_1 = " + lambda_1 +
+                                 ")");
+    throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " + lambda_1 +
+                              " of component " + std::to_string(c) + " (got " +
+                              internal::compact_number(eigenvalue_to_user(lambda)) + ")");
   }
 
   // The aligned field with the default lambda_t: 0, as in the paper, in one

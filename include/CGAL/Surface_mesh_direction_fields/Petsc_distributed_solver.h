@@ -53,6 +53,14 @@ not positive definite: a given `alignment_lambda` is checked against the
 smallest eigenvalue, which is then computed (as for any solver of the
 concept that cannot tell).
 
+Once a request has started, every process takes part in the same collective
+calls, so an error on one process cannot be reported to the others: a failing
+PETSc, SLEPc or MPI call, or an exception (out of memory, among others), on
+any process prints one line on stderr (the process, what failed, in which
+step) and ends every process with `MPI_Abort()`. An exception thrown on the
+first process between requests (bad input, say) is the caller's to handle;
+the other processes then still wait in `serve()` until `finish()`.
+
 SLEPc (`SlepcInitialize()`) must be initialized before the first request and
 finalized after the last. PETSc's run-time options (`-ksp_*`, `-pc_*` for
 the linear solves, `-st_*` for the multigrid of the eigen-solve) are read.
@@ -72,6 +80,16 @@ public:
   {
     CGAL_SMDF_MPI_CALL(MPI_Comm_rank(m_comm, &m_rank));
     CGAL_SMDF_MPI_CALL(MPI_Comm_size(m_comm, &m_size));
+  }
+
+  /// PETSc's error handler that prints nothing and keeps PETSc's own message
+  /// of where an error arose, for the one-line report of a failed call;
+  /// given to `PetscPushErrorHandler()` after `SlepcInitialize()`, it
+  /// replaces PETSc's trace from inside the failing routine
+  static PetscErrorCode error_handler(MPI_Comm communicator, int line, const char* function, const char* file,
+                                      PetscErrorCode code, PetscErrorType type, const char* message, void* context)
+  {
+    return internal::record_petsc_error(communicator, line, function, file, code, type, message, context);
   }
 
   /// the number of processes of the communicator
@@ -98,9 +116,9 @@ public:
       const Parameters p = broadcast_parameters(Parameters());
       Complex_vector ignored;
       if(request == eigenpair_request)
-        eigenpair(internal::Assembly_source(), p);
+        collective_eigenpair(internal::Assembly_source(), p);
       else
-        linear_solve(internal::Assembly_source(), p, ignored, internal::Constraints(), ignored);
+        collective_linear_solve(internal::Assembly_source(), p, ignored, internal::Constraints(), ignored);
     }
   }
 
@@ -118,7 +136,7 @@ public:
                                                   const internal::Eigen_solve_options& options) const override
   {
     send_request(eigenpair_request);
-    return eigenpair(source, broadcast_parameters(parameters(s, 0., options)));
+    return collective_eigenpair(source, broadcast_parameters(parameters(s, 0., options)));
   }
 
   internal::Distributed_solve_report shifted_solve(const internal::Assembly_source& source, double s, double lambda,
@@ -127,7 +145,7 @@ public:
                                                    Complex_vector& u) const override
   {
     send_request(linear_solve_request);
-    return linear_solve(source, broadcast_parameters(parameters(s, lambda, options)), b, constraints, u);
+    return collective_linear_solve(source, broadcast_parameters(parameters(s, lambda, options)), b, constraints, u);
   }
   /// \endcond
 
@@ -165,6 +183,23 @@ private:
   {
     const double limit = (std::min)(p.max_iterations, double((std::numeric_limits<PetscInt>::max)()));
     return static_cast<PetscInt>(limit);
+  }
+
+  // A failure inside a request, on any process, ends every process after one
+  // line (internal::run_collective_step): the others wait inside it.
+  internal::Eigen_solve_result collective_eigenpair(const internal::Assembly_source& source,
+                                                    const Parameters& p) const
+  {
+    return internal::run_collective_step("the distributed eigen-solve", [&] { return eigenpair(source, p); });
+  }
+
+  internal::Distributed_solve_report collective_linear_solve(const internal::Assembly_source& source,
+                                                             const Parameters& p, const Complex_vector& b,
+                                                             const internal::Constraints& constraints,
+                                                             Complex_vector& u) const
+  {
+    return internal::run_collective_step("the distributed linear solve",
+                                         [&] { return linear_solve(source, p, b, constraints, u); });
   }
 
   // Collective: the eigenpair, M-normalized, whole on the first process.

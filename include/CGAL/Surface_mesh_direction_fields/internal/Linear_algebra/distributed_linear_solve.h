@@ -18,6 +18,8 @@
 
 #include <petscksp.h>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 // The aligned and constrained fields over MPI processes (user manual,
@@ -50,6 +52,18 @@ inline Vec scattered_from_first_process(Mat S, const Complex_vector& whole)
   CGAL_SMDF_PETSC_CALL(VecScatterDestroy(&to_zero));
   CGAL_SMDF_PETSC_CALL(VecDestroy(&all));
   return v;
+}
+
+// PETSc takes a negative -ksp_max_it and then stops at once, unconverged,
+// which would read as a matrix that is not positive definite: such an option
+// is refused (on every process alike, as every process reads it).
+inline void check_iteration_limit(KSP ksp, const char* option)
+{
+  PetscReal relative, absolute, divergence;
+  PetscInt limit;
+  CGAL_SMDF_PETSC_CALL(KSPGetTolerances(ksp, &relative, &absolute, &divergence, &limit));
+  if(limit < 1)
+    throw std::invalid_argument(std::string(option) + " must be at least 1 (got " + std::to_string(limit) + ")");
 }
 
 struct Distributed_linear_solve_result
@@ -115,6 +129,7 @@ inline Distributed_linear_solve_result shifted_solve_in_gauge(Mat A, Mat M, doub
   // prolongation, built from the real near-null vector, stays real.
   CGAL_SMDF_PETSC_CALL(PCGAMGSetNSmooths(pc, 0));
   CGAL_SMDF_PETSC_CALL(KSPSetFromOptions(ksp));
+  check_iteration_limit(ksp, "-ksp_max_it");
   Distributed_linear_solve_result result;
   CGAL_SMDF_PETSC_CALL(VecDuplicate(b, &result.solution));
   CGAL_SMDF_PETSC_CALL(KSPSolve(ksp, rhs, result.solution));

@@ -19,6 +19,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
+#include <new>
+#include <stdexcept>
 
 // Every PETSc, SLEPc and MPI call of the distributed solvers goes through
 // one of the two macros below. The processes of a distributed solve take
@@ -29,7 +32,7 @@
 // MPI_Abort, PETSc's own way out of a failed collective (PetscCallAbort does
 // the same after printing PETSc's trace). A program that wants the one line
 // only, and not also PETSc's trace from inside the failing routine, pushes
-// PetscReturnErrorHandler after initializing PETSc (direction_field does).
+// Petsc_distributed_solver::error_handler after initializing PETSc (direction_field does).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -46,11 +49,52 @@ inline void print_failed_call(const char* library, const char* call, const char*
   std::fflush(stderr);
 }
 
+// Where an error arose in PETSc (the routine and its message), which PETSc
+// passes to the error handler only. Recorded by record_petsc_error when a
+// program pushes it as PETSc's error handler
+// (Petsc_distributed_solver::error_handler).
+struct Petsc_initial_error
+{
+  char routine[64] = "";
+  char message[192] = "";
+};
+
+inline Petsc_initial_error& petsc_initial_error()
+{
+  static thread_local Petsc_initial_error error;
+  return error;
+}
+
+inline PetscErrorCode record_petsc_error(MPI_Comm, int, const char* routine, const char*, PetscErrorCode code,
+                                         PetscErrorType type, const char* message, void*)
+{
+  if(type == PETSC_ERROR_INITIAL)
+  {
+    Petsc_initial_error& e = petsc_initial_error();
+    std::snprintf(e.routine, sizeof(e.routine), "%s", routine != nullptr ? routine : "");
+    std::snprintf(e.message, sizeof(e.message), "%s", message != nullptr ? message : "");
+  }
+  return code;
+}
+
 [[noreturn]] inline void abort_after_petsc_error(PetscErrorCode code, const char* call)
 {
+  // PETSc's message for the error code; a failed allocation inside PETSc
+  // (its error arose in PetscMalloc...) may come with a code of no message
   const char* message = nullptr;
-  if(PetscErrorMessage(code, &message, nullptr) != 0 || message == nullptr) message = "unknown error";
-  print_failed_call("PETSc", call, message);
+  if(PetscErrorMessage(code, &message, nullptr) != 0) message = nullptr;
+  const Petsc_initial_error& initial = petsc_initial_error();
+  char text[320];
+  if(code == PETSC_ERR_MEM || std::strncmp(initial.routine, "PetscMalloc", 11) == 0)
+    std::snprintf(text, sizeof(text), "out of memory");
+  else if(message != nullptr && initial.message[0] != '\0')
+    std::snprintf(text, sizeof(text), "%s (%s)", message, initial.message);
+  else if(message != nullptr)
+    std::snprintf(text, sizeof(text), "%s", message);
+  else
+    std::snprintf(text, sizeof(text), "PETSc error %d%s%s", static_cast<int>(code), initial.message[0] ? ": " : "",
+                  initial.message);
+  print_failed_call("PETSc", call, text);
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::abort();  // MPI_Abort does not return
 }
@@ -61,6 +105,39 @@ inline void print_failed_call(const char* library, const char* call, const char*
   int length = 0;
   MPI_Error_string(code, message, &length);
   print_failed_call("MPI", call, message);
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  std::abort();
+}
+
+// Runs one step of a collective request (`step` names it, e.g. "the
+// eigen-solve"). Once a process has entered a collective request, the others
+// wait for it inside PETSc or MPI: an exception on one process (out of
+// memory, or any other) cannot be agreed on, so it ends every process too,
+// after the failing process's one line.
+template <typename Step>
+auto run_collective_step(const char* step, Step&& run) -> decltype(run())
+{
+  const char* failure = nullptr;
+  try
+  {
+    return run();
+  }
+  catch(const std::bad_alloc&)
+  {
+    failure = "out of memory";
+  }
+  catch(const std::length_error&)  // a size beyond what a container can hold
+  {
+    failure = "out of memory";
+  }
+  catch(const std::exception& e)
+  {
+    failure = e.what();
+  }
+  int rank = -1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::fprintf(stderr, "Surface_mesh_direction_fields: error on process %d: %s in %s\n", rank, failure, step);
+  std::fflush(stderr);
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::abort();
 }
