@@ -240,6 +240,8 @@ import json, math, sys
 d = json.load(open(sys.argv[1]))
 assert d["repairs"]["vertices_duplicated"] >= 1 and d["components"] == 2 and d["mesh_vertices"] == 8
 assert d["component_index_sums"] == [4, 4] and d["euler_characteristic"] == 4
+# two tetrahedra: the field is nowhere near zero (the low-magnitude fraction is 0)
+assert d["component_low_magnitude_fractions"] == [0, 0]
 dirs = [list(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
 assert len(dirs) == 7 and all(abs(math.sqrt(sum(x * x for x in v)) - 1) < 1e-12 for v in dirs)
 EOF2

@@ -3,14 +3,19 @@
 single-process one: the same smallest eigenvalues (to 1e-8 relative) and the
 same singular faces, for the smoothest field on meshes with several components
 and with boundary, for the curvature-aligned and the boundary-constrained
-fields, on 1, 2 and 4 processes, every component spread over the processes
-(--distribute-from 0: 4 processes leave some process without a face, and the
-first without a row, of the single-triangle component); and with the default
-threshold, which leaves these small components to the first process.
+fields, on 1, 2 and 4 processes, every component of at least 32 vertices per
+process spread over the processes (--distribute-from 0; smaller ones, here a
+single triangle, stay on the first process); and with the default
+threshold, which leaves these small components to the first process. Then
+the fields that LOBPCG alone does not finish: a dumbbell whose field is
+eleven orders smaller on one end than on the other, an icosphere's nearly
+equal smallest eigenvalues; 500 tetrahedra (components too small to spread);
+and failures: refused options, processes out of memory or killed.
 
     usage: test_distributed.py DIRECTION_FIELD MPIEXEC SHARED_MESH_DIR OUTPUT_DIR
 """
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -43,7 +48,6 @@ def run(mesh, options, ranks, tag, distribute_from="0"):
 # return another field of the same energy)
 two_parts = os.path.join(OUT, "ellipsoid_and_triangle.off")
 with open(two_parts, "w") as f:
-    import math
     rings, points, faces = 12, [(0, 0, 0.6)], []
     for i in range(1, rings):
         for j in range(2 * rings):
@@ -100,6 +104,147 @@ check(d is not None and sing == single_sing, "--petsc-options: the same singular
 d, sing = run(two_parts, [], 2, "default_threshold", distribute_from=None)
 check(d is not None and sing == single_sing and d["eigenvalues"] == single["eigenvalues"],
       "default --distribute-from: the first process's solve, the same eigenvalues and singular faces")
+
+def write_off(path, points, faces):
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(faces)) + "".join("%r %r %r\n" % p for p in points) +
+                "".join("3 %d %d %d\n" % t for t in faces))
+
+
+def surface_of_revolution(path, profile, segments):
+    """profile: (radius, height) from pole to pole, the poles at radius 0"""
+    points = [(0., 0., profile[0][1])]
+    for r, z in profile[1:-1]:
+        points += [(r * math.cos(2 * math.pi * j / segments), r * math.sin(2 * math.pi * j / segments), z)
+                   for j in range(segments)]
+    points.append((0., 0., profile[-1][1]))
+    last, rings = len(points) - 1, len(profile) - 2
+    index = lambda i, j: 1 + i * segments + j % segments
+    faces = []
+    for j in range(segments):
+        faces += [(0, index(0, j), index(0, j + 1)), (last, index(rings - 1, j + 1), index(rings - 1, j))]
+    for i in range(rings - 1):
+        for j in range(segments):
+            a, b, c, d = index(i, j), index(i, j + 1), index(i + 1, j), index(i + 1, j + 1)
+            faces += [(a, c, b), (b, c, d)]
+    write_off(path, points, faces)
+
+
+def dumbbell(path, big=1., neck=0.1, length=6., small=0.7, steps=80, segments=64):
+    """two spheres joined by a long thin neck: the smoothest field lives on the
+    big one and falls by eleven orders of magnitude along the neck"""
+    top = math.asin(neck / big)
+    profile = [(big * math.sin(t), big * math.cos(t))
+               for t in (math.pi - (math.pi - top) * k / steps for k in range(steps + 1))]
+    start = big * math.cos(top)
+    along = max(2, int(steps * length / (math.pi * big)))
+    profile += [(neck, start + length * k / along) for k in range(1, along)]
+    bottom = math.asin(neck / small)
+    center = start + length + small * math.cos(bottom)
+    profile += [(small * math.sin(t), center + small * math.cos(t))
+                for t in (math.pi - bottom - (math.pi - bottom) * k / steps for k in range(steps + 1))]
+    profile[0], profile[-1] = (0., profile[0][1]), (0., profile[-1][1])
+    surface_of_revolution(path, profile, segments)
+
+
+def icosphere(path, levels):
+    t = (1 + 5 ** 0.5) / 2
+    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
+             (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
+             (8, 6, 7), (9, 8, 1)]
+    for _ in range(levels):
+        middle, refined = {}, []
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                middle[key] = len(points)
+                points.append(tuple((p + q) / 2 for p, q in zip(points[a], points[b])))
+            return middle[key]
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            refined += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = refined
+    points = [tuple(x / math.sqrt(sum(y * y for y in p)) for x in p) for p in points]
+    write_off(path, points, faces)
+
+
+# the dumbbell: vertices below the solve's accuracy, reported alike by both
+# solvers (inverse iteration on a distributed factorization finishes the
+# distributed solve), and the same singular faces
+def determined_faces(ply, relative):
+    """the faces of an ASCII PLY of --ply whose three vertices' magnitudes are
+    at least `relative` times the largest"""
+    with open(ply) as f:
+        vertices = 0
+        for line in f:
+            if line.startswith("element vertex"):
+                vertices = int(line.split()[2])
+            if line.startswith("end_header"):
+                break
+        magnitude = [float(next(f).split()[6]) for _ in range(vertices)]
+        largest = max(magnitude)
+        kept = set()
+        for face, line in enumerate(f):
+            corners = [int(x) for x in line.split()[1:4]]
+            if all(magnitude[v] >= relative * largest for v in corners):
+                kept.add(face)
+    return kept
+
+
+def singular_set(text, faces=None):
+    pairs = set(tuple(line.split()) for line in text.splitlines() if line.strip())
+    return pairs if faces is None else set(p for p in pairs if int(p[0]) in faces)
+
+
+bell = os.path.join(OUT, "dumbbell.off")
+dumbbell(bell)
+single, single_sing = run(bell, ["--ply", os.path.join(OUT, "dumbbell.ply")], 0, "dumbbell_single")
+d, sing = run(bell, [], 2, "dumbbell_np2")
+if single and d:
+    low_1, low_2 = single["component_low_magnitude_fractions"][0], d["component_low_magnitude_fractions"][0]
+    check(low_1 > 0.01 and abs(low_1 - low_2) < 0.002, "dumbbell: low-magnitude fractions %r and %r" % (low_1, low_2))
+    check(d["converged"] and d["residual"] <= 1e-10, "dumbbell, 2 processes: converged (%r)" % d["residual"])
+    # where the field is above the solve's accuracy, the same singular faces;
+    # below it (here around both poles, where the field vanishes to 1e-10 of
+    # its largest), the same number, not always the same faces
+    kept = determined_faces(os.path.join(OUT, "dumbbell.ply"), 100 * 1e-10)
+    check(singular_set(sing, kept) == singular_set(single_sing, kept) and len(kept) > 0.9 * 39808,
+          "dumbbell: the same singular faces where the field is above the accuracy")
+    check(d["singular_faces"] == single["singular_faces"] and d["index_sum"] == single["index_sum"],
+          "dumbbell: %d and %d singular faces" % (single["singular_faces"], d["singular_faces"]))
+# without the inverse iteration (-smdf_refinement_steps 0): still a result; a negative count: refused
+d, _ = run(bell, ["--petsc-options", "-smdf_refinement_steps 0"], 2, "dumbbell_no_refinement")
+check(d is not None and d["singular_faces"] == single["singular_faces"], "-smdf_refinement_steps 0: a result")
+r = subprocess.run([MPIEXEC, "-np", "2", BIN, bell, "--solver", "petsc", "--distribute-from", "0",
+                    "--petsc-options", "-smdf_refinement_steps -1"], capture_output=True, text=True, env=ENV, timeout=300)
+check(r.returncode != 0 and "-smdf_refinement_steps must be at least 0 (got -1)" in r.stderr,
+      "-smdf_refinement_steps -1: status %d, %r" % (r.returncode, r.stderr[:200]))
+
+# an icosphere (nearly equal smallest eigenvalues, where LOBPCG crawls): converged, the same 8 singular faces
+sphere = os.path.join(OUT, "icosphere.off")
+icosphere(sphere, 4)
+single, single_sing = run(sphere, [], 0, "icosphere_single")
+d, sing = run(sphere, [], 2, "icosphere_np2")
+check(d is not None and d["converged"] and d["singular_faces"] == single["singular_faces"] == 8,
+      "icosphere, 2 processes: converged with 8 singular faces")
+
+# 500 tetrahedra with every component asked to be spread: each is too small
+# (fewer than 32 vertices per process), so the first process solves each
+# alone, exactly as one process would
+tetrahedra = os.path.join(OUT, "tetrahedra.off")
+points, faces = [], []
+for k in range(500):
+    x, y, b = 3. * (k % 25), 3. * (k // 25), len(points)
+    points += [(x, y, 0.), (x + 1, y, 0.), (x, y + 1, 0.), (x, y, 1.)]
+    faces += [(b, b + 2, b + 1), (b, b + 1, b + 3), (b, b + 3, b + 2), (b + 1, b + 2, b + 3)]
+write_off(tetrahedra, points, faces)
+single, single_sing = run(tetrahedra, [], 0, "tetrahedra_single")
+d, sing = run(tetrahedra, [], 2, "tetrahedra_np2")
+check(d is not None and d["eigenvalues"] == single["eigenvalues"] and d["residual"] == single["residual"]
+      and sing == single_sing, "500 tetrahedra, --distribute-from 0: the first process's solves, unchanged")
 
 # an input the first process refuses: one error line and status 1, the other processes released (no hang)
 r = subprocess.run([MPIEXEC, "-np", "2", BIN, os.path.join(OUT, "missing.off"), "--solver", "petsc"],

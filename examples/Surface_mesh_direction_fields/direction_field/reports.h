@@ -69,6 +69,8 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
   array("eigenvalues", [](const SMDF::Component_report& c) { return number(c.eigenvalue); });
   array("component_euler_characteristics", [](const SMDF::Component_report& c) { return std::to_string(c.euler_characteristic); });
   array("component_index_sums", [](const SMDF::Component_report& c) { return std::to_string(c.index_sum); });
+  array("component_low_magnitude_fractions",
+        [](const SMDF::Component_report& c) { return number(c.low_magnitude_fraction); });
   os << ",\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
@@ -129,7 +131,10 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
     else os << c.eigenvalue;
     os << ", " << c.iterations
        << " iterations, residual " << c.residual << (c.converged ? "" : " (not converged)") << ", "
-       << c.number_of_singular_faces << " singular faces, index sum " << c.index_sum << "/" << r.degree << "\n";
+       << c.number_of_singular_faces << " singular faces, index sum " << c.index_sum << "/" << r.degree;
+    if(c.low_magnitude_fraction > 0.)
+      os << "; " << 100. * c.low_magnitude_fraction << "% of its vertices below the solve's accuracy";
+    os << "\n";
   }
   if(r.components.size() > 10) os << "...             (" << r.components.size() - 10 << " more components)\n";
   os << "singularities   " << r.number_of_singular_faces << " faces, index sum " << r.index_sum << "/" << r.degree

@@ -69,6 +69,12 @@ struct Component_report
   int index_sum = 0;
   /// number of faces of the component with a non-zero index
   std::size_t number_of_singular_faces = 0;
+  /// fraction of the component's vertices where the field is too small for the solve's accuracy:
+  /// its magnitude is below `100 * residual_tolerance` times the component's largest. The
+  /// directions there, and the singular faces among them, are not determined by the tolerance
+  /// and may differ between solvers, random seeds and numbers of processes (user manual,
+  /// section "Where the Field Vanishes")
+  double low_magnitude_fraction = 0.;
 };
 
 /*!

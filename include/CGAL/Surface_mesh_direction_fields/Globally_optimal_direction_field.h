@@ -748,6 +748,11 @@ private:
       u = aligned_field(c, Mq, aligned, constraints, requests.alignment, options, user_solver, linear_solver, report,
                         result.timings);
 
+    // a solver that fails without saying so (a user's, or a library's out of
+    // memory) must not turn into NaN directions in the outputs
+    if(!u.allFinite() || u.size() != static_cast<Eigen::Index>(comp.vertices.size()))
+      throw Solver_failure_error("the solver returned a field that is not finite on component " + std::to_string(c));
+    report.low_magnitude_fraction = internal::fraction_below(u, internal::low_magnitude_threshold(options.residual_tolerance));
     double area = 0.;
     for(std::size_t f : comp.faces) area += m_tangent_spaces.face_area[f];
     for(std::size_t i = 0; i < comp.vertices.size(); ++i)

@@ -65,6 +65,13 @@ struct Distributed_eigen_solve_options
   double regauge_tolerance = 1e-6;
   PetscInt regauge_iterations = 40;
   bool slepc_lobpcg = false;  // SLEPc's LOBPCG instead of the package's (for measurements)
+  // LOBPCG's vector is accurate relative to its largest entries; where the
+  // field is below low_magnitude_threshold() of them (user manual, "Where
+  // the Field Vanishes"), or where LOBPCG converges slowly (the nearly equal
+  // smallest eigenvalues of a sphere), a few steps of inverse iteration on a
+  // distributed factorization (MUMPS, when PETSc has it) finish the solve.
+  PetscInt refinement_steps = 4;
+  PetscInt iterations_before_refining = 400;
 };
 
 struct Distributed_eigen_solve_result
@@ -457,6 +464,139 @@ inline Distributed_eigen_solve_result smallest_eigenpair_in_gauge(Mat A, Mat M, 
   return result;
 }
 
+// The fraction of the entries of x (over all processes) whose modulus is
+// below `relative` times the largest.
+inline double fraction_below(Vec x, double relative)
+{
+  Vec modulus;
+  CGAL_SMDF_PETSC_CALL(VecDuplicate(x, &modulus));
+  CGAL_SMDF_PETSC_CALL(VecCopy(x, modulus));
+  CGAL_SMDF_PETSC_CALL(VecAbs(modulus));
+  PetscReal largest;
+  CGAL_SMDF_PETSC_CALL(VecMax(modulus, nullptr, &largest));
+  PetscInt size, global_size;
+  CGAL_SMDF_PETSC_CALL(VecGetLocalSize(modulus, &size));
+  CGAL_SMDF_PETSC_CALL(VecGetSize(modulus, &global_size));
+  const PetscScalar* values;
+  CGAL_SMDF_PETSC_CALL(VecGetArrayRead(modulus, &values));
+  long long below = 0, total_below = 0;
+  for(PetscInt i = 0; i < size; ++i)
+    if(PetscRealPart(values[i]) < relative * largest) ++below;
+  CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(modulus, &values));
+  CGAL_SMDF_MPI_CALL(MPI_Allreduce(&below, &total_below, 1, MPI_LONG_LONG, MPI_SUM,
+                                   PetscObjectComm(reinterpret_cast<PetscObject>(x))));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&modulus));
+  return global_size > 0 ? double(total_below) / double(global_size) : 0.;
+}
+
+// Whether PETSc can factor A over the processes (MUMPS's LU; PETSc's own
+// factorizations are for one process).
+inline bool distributed_factorization_available(Mat A)
+{
+  PetscBool available = PETSC_FALSE;
+  CGAL_SMDF_PETSC_CALL(MatGetFactorAvailable(A, MATSOLVERMUMPS, MAT_FACTOR_LU, &available));
+  return available == PETSC_TRUE;
+}
+
+// Whether any process's factorization or solve failed (MUMPS returns no
+// error code when it runs out of memory, only a failed preconditioner), or
+// gave a vector that is not finite.
+inline bool solve_failed_anywhere(KSP ksp, Vec y)
+{
+  PC pc;
+  PCFailedReason pc_reason = PC_NOERROR;
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  CGAL_SMDF_PETSC_CALL(KSPGetPC(ksp, &pc));
+  CGAL_SMDF_PETSC_CALL(PCGetFailedReasonRank(pc, &pc_reason));
+  if(y != nullptr) CGAL_SMDF_PETSC_CALL(KSPGetConvergedReason(ksp, &reason));
+  int failed = pc_reason != PC_NOERROR || reason < 0;
+  if(y != nullptr && !failed)
+  {
+    PetscReal norm;
+    CGAL_SMDF_PETSC_CALL(VecNorm(y, NORM_2, &norm));
+    failed = !std::isfinite(norm);
+  }
+  int anywhere = 0;
+  CGAL_SMDF_MPI_CALL(MPI_Allreduce(&failed, &anywhere, 1, MPI_INT, MPI_MAX, PetscObjectComm(reinterpret_cast<PetscObject>(ksp))));
+  return anywhere != 0;
+}
+
+// The Rayleigh quotient and residual (as LOBPCG's) of x, M-normalized in place.
+inline void rayleigh_quotient_and_residual(Mat A, Mat M, double scale, Vec x, Distributed_eigen_solve_result& result)
+{
+  Vec Mx, Ax;
+  CGAL_SMDF_PETSC_CALL(VecDuplicate(x, &Mx));
+  CGAL_SMDF_PETSC_CALL(VecDuplicate(x, &Ax));
+  CGAL_SMDF_PETSC_CALL(MatMult(M, x, Mx));
+  PetscScalar squared;
+  CGAL_SMDF_PETSC_CALL(VecDot(Mx, x, &squared));
+  const double norm = std::sqrt((std::max)(0., PetscRealPart(squared)));
+  if(norm > 0.)
+  {
+    CGAL_SMDF_PETSC_CALL(VecScale(x, 1. / norm));
+    CGAL_SMDF_PETSC_CALL(VecScale(Mx, 1. / norm));
+  }
+  CGAL_SMDF_PETSC_CALL(MatMult(A, x, Ax));
+  PetscScalar rayleigh;
+  CGAL_SMDF_PETSC_CALL(VecDot(Ax, x, &rayleigh));
+  result.eigenvalue = PetscRealPart(rayleigh);
+  CGAL_SMDF_PETSC_CALL(VecAXPY(Ax, -result.eigenvalue, Mx));  // the residual A x - lambda M x
+  PetscReal r_norm, mx_norm;
+  CGAL_SMDF_PETSC_CALL(VecNorm(Ax, NORM_2, &r_norm));
+  CGAL_SMDF_PETSC_CALL(VecNorm(Mx, NORM_2, &mx_norm));
+  result.residual = r_norm / (scale * mx_norm);
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&Mx));
+  CGAL_SMDF_PETSC_CALL(VecDestroy(&Ax));
+}
+
+// Inverse iteration on one distributed factorization of A + epsilon M (the
+// shift of the single-process solve), started from `result`'s vector. An
+// iterative eigen-solve is accurate relative to the largest entry of its
+// vector: where the field is many orders smaller than that, its directions
+// are noise. Each step of inverse iteration solves with the whole matrix,
+// like the single process, and the directions there become the single
+// process's. At least one step, at most `max_steps`, fewer once the
+// tolerance is reached. If the factorization or a solve fails on any
+// process (out of memory, say), `result` keeps the last good vector.
+inline void refine_by_inverse_iteration(Mat A, Mat M, double scale, const Distributed_eigen_solve_options& options,
+                                        PetscInt max_steps, Distributed_eigen_solve_result& result)
+{
+  Mat K;
+  KSP ksp;
+  PC pc;
+  CGAL_SMDF_PETSC_CALL(MatDuplicate(A, MAT_COPY_VALUES, &K));
+  CGAL_SMDF_PETSC_CALL(MatAXPY(K, options.relative_shift * scale, M, SAME_NONZERO_PATTERN));
+  CGAL_SMDF_PETSC_CALL(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetOperators(ksp, K, K));
+  CGAL_SMDF_PETSC_CALL(KSPSetType(ksp, KSPPREONLY));
+  CGAL_SMDF_PETSC_CALL(KSPGetPC(ksp, &pc));
+  CGAL_SMDF_PETSC_CALL(PCSetType(pc, PCLU));
+  CGAL_SMDF_PETSC_CALL(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  CGAL_SMDF_PETSC_CALL(KSPSetOptionsPrefix(ksp, "refine_"));
+  CGAL_SMDF_PETSC_CALL(KSPSetFromOptions(ksp));
+  CGAL_SMDF_PETSC_CALL(KSPSetUp(ksp));
+  if(!solve_failed_anywhere(ksp, nullptr))
+  {
+    Vec Mx, y;
+    CGAL_SMDF_PETSC_CALL(VecDuplicate(result.vector, &Mx));
+    CGAL_SMDF_PETSC_CALL(VecDuplicate(result.vector, &y));
+    for(PetscInt step = 0; step < max_steps && (step == 0 || !result.converged); ++step)
+    {
+      CGAL_SMDF_PETSC_CALL(MatMult(M, result.vector, Mx));
+      CGAL_SMDF_PETSC_CALL(KSPSolve(ksp, Mx, y));
+      if(solve_failed_anywhere(ksp, y)) break;
+      CGAL_SMDF_PETSC_CALL(VecCopy(y, result.vector));
+      rayleigh_quotient_and_residual(A, M, scale, result.vector, result);
+      result.converged = result.residual <= options.residual_tolerance;
+      ++result.iterations;
+    }
+    CGAL_SMDF_PETSC_CALL(VecDestroy(&Mx));
+    CGAL_SMDF_PETSC_CALL(VecDestroy(&y));
+  }
+  CGAL_SMDF_PETSC_CALL(KSPDestroy(&ksp));
+  CGAL_SMDF_PETSC_CALL(MatDestroy(&K));
+}
+
 // The smallest eigenpair of (A, M) in the gauge of the processes' own
 // estimates, aligned.
 template <typename SparseSolver>
@@ -476,8 +616,15 @@ Distributed_eigen_solve_result distributed_smallest_eigenpair(Mat A, Mat M, cons
   const Complex_vector better = Eigen::Map<const Complex_vector>(values, size);
   CGAL_SMDF_PETSC_CALL(VecRestoreArrayRead(first.vector, &values));
   CGAL_SMDF_PETSC_CALL(VecDestroy(&first.vector));
-  Distributed_eigen_solve_result result = smallest_eigenpair_in_gauge(A, M, better, options);
+  const bool can_refine = options.refinement_steps > 0 && distributed_factorization_available(A);
+  Distributed_eigen_solve_options second_options = options;
+  if(can_refine) second_options.max_iterations = (std::min)(options.max_iterations, options.iterations_before_refining);
+  Distributed_eigen_solve_result result = smallest_eigenpair_in_gauge(A, M, better, second_options);
   result.iterations += first.iterations;
+  if(can_refine && result.vector &&
+     (!result.converged ||
+      fraction_below(result.vector, low_magnitude_threshold(options.residual_tolerance)) > 0.))
+    refine_by_inverse_iteration(A, M, distributed_eigenvalue_scale(A, M), options, options.refinement_steps, result);
   return result;
 }
 

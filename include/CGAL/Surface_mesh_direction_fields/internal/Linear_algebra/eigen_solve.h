@@ -106,6 +106,24 @@ struct Eigen_solve_options
   std::size_t stall_window = 8;
 };
 
+// An eigenvector computed to the relative residual `tolerance` is
+// determined to about that fraction of its largest entries: below this
+// threshold (relative to the largest modulus) its entries, and so the
+// directions and singularities there, may differ between solvers, seeds and
+// numbers of processes (user manual, "Where the Field Vanishes").
+inline double low_magnitude_threshold(double tolerance) { return 100. * tolerance; }
+
+// The fraction of the entries of u whose modulus is below `relative` times the largest.
+inline double fraction_below(const Complex_vector& u, double relative)
+{
+  if(u.size() == 0) return 0.;
+  const double largest = u.cwiseAbs().maxCoeff();
+  Eigen::Index below = 0;
+  for(Eigen::Index i = 0; i < u.size(); ++i)
+    if(std::abs(u[i]) < relative * largest) ++below;
+  return double(below) / double(u.size());
+}
+
 struct Eigen_solve_result
 {
   Complex_vector vector;  // M-normalized: u^* M u = 1
