@@ -245,6 +245,37 @@ assert d["component_low_magnitude_fractions"] == [0, 0]
 dirs = [list(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
 assert len(dirs) == 7 and all(abs(math.sqrt(sum(x * x for x in v)) - 1) < 1e-12 for v in dirs)
 EOF2
+# points no face uses (merged duplicates, a stray point): left out of the
+# repaired mesh, so --mesh-out and --ply refer to every vertex they hold
+# (vcglib's loaders need it); --directions still has a line per file vertex
+cat > "$out/unused_points.off" <<'EOF2'
+OFF
+7 2 0
+0 0 0
+1 0 0
+0 1 0
+1 0 0
+0 1 0
+1 1 0
+5 5 5
+3 0 1 2
+3 3 5 4
+EOF2
+"$bin" "$out/unused_points.off" --json --directions "$out/unused_dir.txt" --mesh-out "$out/unused_mesh.off" \
+  --ply "$out/unused.ply" > "$out/unused.json"
+check "unused points: left out of the repaired mesh" python_checks "$out/unused.json" "$out/unused_dir.txt" "$out/unused_mesh.off" "$out/unused.ply" <<'EOF2'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["repairs"]["unused_vertices_removed"] == 3 and d["mesh_vertices"] == 4 and d["isolated_vertices"] == 0
+dirs = [tuple(map(float, l.split())) for l in open(sys.argv[2]) if l.strip()]
+assert len(dirs) == 7 and dirs[6] == (0., 0., 0.) and dirs[3] == dirs[1] and dirs[4] == dirs[2]
+mesh = open(sys.argv[3]).read().split()
+vertices, faces = int(mesh[1]), int(mesh[2])
+corners = [int(x) for x in mesh[4 + 3 * vertices:]]
+assert vertices == 4 and faces == 2 and set(c for i, c in enumerate(corners) if i % 4) == {0, 1, 2, 3}
+ply = open(sys.argv[4]).read()
+assert "element vertex 4\n" in ply
+EOF2
 # a non-convex (L-shaped) planar polygon
 printf 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n' > "$out/ell.off"
 "$bin" "$out/ell.off" --json --directions "$out/ell_dir.txt" > "$out/ell.json"

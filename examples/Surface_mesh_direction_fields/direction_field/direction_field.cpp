@@ -277,6 +277,11 @@ void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input
     CGAL::Surface_mesh_direction_fields::internal::Number_writer w(outputs.stream(o.directions));
     for(Vertex_index v : input.vertex_of_file_vertex)  // a merged or duplicated vertex: its first copy
     {
+      if(v == Mesh::null_vertex())  // a point no face uses: the zero vector
+      {
+        w.line(0., 0., 0.);
+        continue;
+      }
       const Vector_3& d = field.directions[std::size_t(v)];
       w.line(d.x(), d.y(), d.z());
     }

@@ -21,6 +21,8 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
 
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -47,11 +49,12 @@ struct Repair_report
   std::size_t reoriented_triangles = 0;
   std::size_t duplicated_vertices = 0;
   std::size_t skipped_triangles = 0;
+  std::size_t unused_vertices = 0;
 
   bool any() const
   {
     return merged_points + degenerate_polygons + triangulated_polygons + repeated_triangles + reoriented_triangles +
-           duplicated_vertices + skipped_triangles > 0;
+           duplicated_vertices + skipped_triangles + unused_vertices > 0;
   }
   std::string summary() const
   {
@@ -66,6 +69,7 @@ struct Repair_report
     item(reoriented_triangles, "faces reoriented");
     item(duplicated_vertices, "non-manifold vertices duplicated");
     item(skipped_triangles, "faces skipped");
+    item(unused_vertices, "vertices without a face left out");
     return os.str();
   }
 };
@@ -76,7 +80,7 @@ struct Repaired_mesh
   typedef typename Mesh::Vertex_index Vertex_index;
   Mesh mesh;
   std::size_t file_vertices = 0, file_faces = 0;
-  std::vector<Vertex_index> vertex_of_file_vertex;  // file vertex -> mesh vertex (first copy)
+  std::vector<Vertex_index> vertex_of_file_vertex;  // file vertex -> mesh vertex (first copy; null if unused)
   std::vector<std::size_t> file_face_of_face;       // mesh face -> polygon of the file
   std::vector<std::size_t> file_vertex_of_vertex;   // mesh vertex -> the file vertex it copies
   Repair_report report;
@@ -128,6 +132,49 @@ struct Counting_visitor : public CGAL::Polygon_mesh_processing::Default_orientat
   void polygon_orientation_reversed(std::size_t) { ++*reversed; }
   void duplicated_vertex(std::size_t original, std::size_t copy) { ++*duplicated; copies->emplace_back(original, copy); }
 };
+
+// Step 6: the vertices that no face uses (points of the file no face
+// refers to, points merged into their first copy, originals whose faces all
+// went to copies) are left out of the mesh, so that every file written on it
+// refers to all its vertices (vcglib's loaders, as QuadWild uses them,
+// assume that). The faces keep their order; a file vertex left out maps to
+// a copy of it if one is used, else to no vertex.
+template <typename Mesh>
+void remove_unused_vertices(Repaired_mesh<Mesh>& out)
+{
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::size_type size_type;
+  const Mesh& mesh = out.mesh;
+  std::size_t used = 0;
+  for(Vertex_index v : mesh.vertices())
+    if(!mesh.is_isolated(v)) ++used;
+  if(used == mesh.number_of_vertices()) return;
+  Mesh compact;
+  compact.reserve(static_cast<size_type>(used), mesh.number_of_edges(), mesh.number_of_faces());
+  std::vector<Vertex_index> new_vertex(mesh.number_of_vertices(), Mesh::null_vertex());
+  std::vector<std::size_t> file_vertex_of_vertex;
+  file_vertex_of_vertex.reserve(used);
+  for(Vertex_index v : mesh.vertices())
+    if(!mesh.is_isolated(v))
+    {
+      new_vertex[std::size_t(v)] = compact.add_vertex(mesh.point(v));
+      file_vertex_of_vertex.push_back(out.file_vertex_of_vertex[std::size_t(v)]);
+    }
+  for(auto f : mesh.faces())
+  {
+    std::array<Vertex_index, 3> corners;
+    std::size_t k = 0;
+    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) corners[k++] = new_vertex[std::size_t(v)];
+    compact.add_face(corners[0], corners[1], corners[2]);  // a face of a valid mesh: always added
+  }
+  for(Vertex_index& v : out.vertex_of_file_vertex) v = new_vertex[std::size_t(v)];
+  for(std::size_t k = 0; k < file_vertex_of_vertex.size(); ++k)  // a vertex left out: a used copy of it
+    if(out.vertex_of_file_vertex[file_vertex_of_vertex[k]] == Mesh::null_vertex())
+      out.vertex_of_file_vertex[file_vertex_of_vertex[k]] = Vertex_index(static_cast<size_type>(k));
+  out.report.unused_vertices = mesh.number_of_vertices() - used;
+  out.file_vertex_of_vertex = std::move(file_vertex_of_vertex);
+  out.mesh = std::move(compact);
+}
 
 } // namespace read_and_repair_internal
 
@@ -380,6 +427,7 @@ Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path
   out.vertex_of_file_vertex.resize(out.file_vertices);
   for(std::size_t i = 0; i < out.file_vertices; ++i)
     out.vertex_of_file_vertex[i] = Vertex_index(static_cast<typename Mesh::size_type>(first_copy[i]));
+  repair::remove_unused_vertices(out);
   return out;
 }
 

@@ -82,7 +82,8 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"repairs\":{\"merged_points\":" << rep.merged_points << ",\"degenerate_faces_removed\":" << rep.degenerate_polygons
      << ",\"polygons_triangulated\":" << rep.triangulated_polygons << ",\"triangles_from_polygons\":" << rep.triangles_from_polygons
      << ",\"repeated_faces_removed\":" << rep.repeated_triangles << ",\"faces_reoriented\":" << rep.reoriented_triangles
-     << ",\"vertices_duplicated\":" << rep.duplicated_vertices << ",\"faces_skipped\":" << rep.skipped_triangles << "}"
+     << ",\"vertices_duplicated\":" << rep.duplicated_vertices << ",\"faces_skipped\":" << rep.skipped_triangles
+     << ",\"unused_vertices_removed\":" << rep.unused_vertices << "}"
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms)
      << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms)
