@@ -318,7 +318,7 @@ large = os.path.join(SHARED, "nefertiti_sub4.off") if SHARED else ""
 if os.path.exists(large):
     for limited_rank in ("0", "1"):
         failures = 0
-        for megabytes in (350, 400, 500, 600):
+        for megabytes in (350, 400, 500, 600, 700, 900, 1600):
             launcher = launched_with('if [ "$rank" = "%s" ]; then exec prlimit --as=%d "$@"; fi\nexec "$@"\n'
                                      % (limited_rank, megabytes * 1000000), "limit")
             target = os.path.join(OUT, "limited.txt")

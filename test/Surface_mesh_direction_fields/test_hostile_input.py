@@ -407,4 +407,23 @@ check(p.returncode == 1 and open(os.path.join(folder, "d.txt")).read() == "older
       not leftovers(folder) and not [n for n in os.listdir(folder) if n.endswith(".older")],
       "a failing rename restores the older file: %d %r %s" % (p.returncode, err, os.listdir(folder)))
 
+# a vertex of valence 100,000 (a flat fan, and a closed double cone): the
+# repair and the assembly are linear in the valence (their time is measured
+# in benchmark/; here the 60 s limit of run() guards against a quadratic
+# return), and the result is right
+import math as _math
+valence = 100000
+ring = ["%r %r 0\n" % (_math.cos(2 * _math.pi * i / valence), _math.sin(2 * _math.pi * i / valence)) for i in range(valence)]
+write("fan.off", "OFF\n%d %d 0\n" % (valence + 1, valence) + "".join(ring) + "0 0 1\n" +
+      "".join("3 %d %d %d\n" % (valence, i, (i + 1) % valence) for i in range(valence)))
+write("double_cone.off", "OFF\n%d %d 0\n" % (valence + 2, 2 * valence) + "".join(ring) + "0 0 1\n0 0 -1\n" +
+      "".join("3 %d %d %d\n" % (valence, i, (i + 1) % valence) for i in range(valence)) +
+      "".join("3 %d %d %d\n" % (valence + 1, (i + 1) % valence, i) for i in range(valence)))
+for name, faces, index_sum in (("fan.off", valence, None), ("double_cone.off", 2 * valence, 8)):
+    r = run([os.path.join(OUT, name), "--json"])
+    d = json.loads(r.stdout) if r.returncode == 0 else None
+    check(d is not None and d["mesh_faces"] == faces and sum(d["repairs"].values()) == 0 and
+          (index_sum is None or d["index_sum"] == index_sum),
+          "valence %d, %s: status %d %r" % (valence, name, r.returncode, r.stderr[-200:]))
+
 check.finish()

@@ -35,6 +35,7 @@
 #include <numeric>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -359,6 +360,95 @@ std::vector<std::size_t> add_triangles(const std::vector<P3>& points, const std:
   return added;
 }
 
+// The mesh of triangles whose directed edges are unique (each edge in each
+// direction at most once), built halfedge by halfedge in time linear in the
+// number of triangles: CGAL's add_face() searches the halfedges around a
+// vertex for each face added to it, quadratic in its valence (a fan of
+// valence 100,000 took 10 s). Vertex i = point i, face t = triangle t.
+// Returns false, leaving the mesh empty, if a vertex is not manifold (its
+// triangles form more than one fan): then CGAL's orientation duplicates it.
+template <typename Mesh>
+bool build_oriented_manifold(const std::vector<P3>& points, const std::vector<Triangle>& triangles, Mesh& mesh)
+{
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  typedef typename Mesh::size_type size_type;
+  const std::size_t directed = 3 * triangles.size();
+  auto source = [&](std::size_t e) { return triangles[e / 3][e % 3]; };
+  auto target = [&](std::size_t e) { return triangles[e / 3][(e + 1) % 3]; };
+  // the directed edges leaving each vertex, as (target, edge), sorted
+  Vertex_buckets<std::pair<std::size_t, std::size_t> > leaving(points.size(), [&](const auto& add) {
+    for(std::size_t e = 0; e < directed; ++e) add(source(e), std::make_pair(target(e), e));
+  });
+  leaving.for_each_sorted([](auto, auto) {});
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  auto opposite_edge = [&](std::size_t e) {  // the edge target(e) -> source(e), if any
+    const auto begin = leaving.item.begin() + static_cast<std::ptrdiff_t>(leaving.first[target(e)]);
+    const auto end = leaving.item.begin() + static_cast<std::ptrdiff_t>(leaving.first[target(e) + 1]);
+    const auto it = std::lower_bound(begin, end, std::make_pair(source(e), std::size_t(0)));
+    return it != end && it->first == source(e) ? it->second : none;
+  };
+  mesh.reserve(static_cast<size_type>(points.size()), static_cast<size_type>(directed / 2 + 3),
+               static_cast<size_type>(triangles.size()));
+  for(const P3& p : points) mesh.add_vertex(typename Mesh::Point(p[0], p[1], p[2]));
+  std::vector<Halfedge_index> halfedge_of_edge(directed);
+  std::vector<Halfedge_index> border_leaving(points.size()), incoming(points.size());
+  std::vector<std::size_t> corners(points.size(), 0);
+  bool manifold = true;
+  for(std::size_t e = 0; e < directed; ++e)
+  {
+    ++corners[source(e)];
+    if(halfedge_of_edge[e] != Halfedge_index()) continue;
+    const Halfedge_index h = mesh.add_edge();
+    halfedge_of_edge[e] = h;
+    mesh.set_target(h, Vertex_index(static_cast<size_type>(target(e))));
+    mesh.set_target(mesh.opposite(h), Vertex_index(static_cast<size_type>(source(e))));
+    const std::size_t o = opposite_edge(e);
+    if(o != none)
+      halfedge_of_edge[o] = mesh.opposite(h);
+    else  // a border halfedge, from target(e) to source(e)
+    {
+      Halfedge_index& b = border_leaving[target(e)];
+      manifold = manifold && b == Halfedge_index();  // two border halfedges leave a pinched vertex
+      b = mesh.opposite(h);
+      incoming[source(e)] = b;
+    }
+  }
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const auto f = mesh.add_face();
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const Halfedge_index h = halfedge_of_edge[3 * t + k];
+      mesh.set_face(h, f);
+      mesh.set_next(h, halfedge_of_edge[3 * t + (k + 1) % 3]);
+      if(incoming[target(3 * t + k)] == Halfedge_index()) incoming[target(3 * t + k)] = h;
+    }
+    mesh.set_halfedge(f, halfedge_of_edge[3 * t + 2]);  // into the first corner, as CGAL's add_face()
+  }
+  for(std::size_t v = 0; v < points.size() && manifold; ++v)
+  {
+    const Halfedge_index b = border_leaving[v];
+    if(b != Halfedge_index()) mesh.set_next(incoming[v], b);  // incoming[v] is v's border halfedge in
+  }
+  for(std::size_t v = 0; v < points.size() && manifold; ++v)
+  {
+    if(incoming[v] == Halfedge_index()) continue;
+    mesh.set_halfedge(Vertex_index(static_cast<size_type>(v)), incoming[v]);
+    // one fan: turning around v from its halfedge in meets all its corners
+    std::size_t faces = 0;
+    Halfedge_index h = incoming[v];
+    do
+    {
+      if(!mesh.is_border(h)) ++faces;
+      h = mesh.opposite(mesh.next(h));
+    } while(h != incoming[v] && faces <= corners[v]);
+    manifold = faces == corners[v];
+  }
+  if(!manifold) mesh.clear();
+  return manifold;
+}
+
 // Step 5 when needed: orientation and non-manifold vertices by CGAL (new
 // points are appended); the copies made, as (original point, new point).
 inline std::vector<std::pair<std::size_t, std::size_t> > orient(std::vector<P3>& points, std::vector<Triangle>& triangles,
@@ -405,12 +495,11 @@ Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path
   std::vector<std::pair<std::size_t, std::size_t> > copies;
   std::size_t skipped = 0;
   std::vector<std::size_t> added;
-  if(repair::directed_edges_are_unique(soup.points.size(), triangles))
+  if(repair::directed_edges_are_unique(soup.points.size(), triangles) &&
+     repair::build_oriented_manifold(soup.points, triangles, out.mesh))
   {
-    added = repair::add_triangles(soup.points, triangles, out.mesh, skipped);
-    std::vector<typename Mesh::Halfedge_index> pinched;
-    if(skipped == 0) CGAL::Polygon_mesh_processing::non_manifold_vertices(out.mesh, std::back_inserter(pinched));
-    if(skipped > 0 || !pinched.empty()) { out.mesh.clear(); skipped = 0; added.clear(); }
+    added.resize(triangles.size());
+    std::iota(added.begin(), added.end(), std::size_t(0));
   }
   if(out.mesh.number_of_faces() == 0)
   {

@@ -92,11 +92,13 @@ constexpr bool controls_blas_threads = false;
 // cannot, the factorization and its solves avoid the BLAS (Eigen's kernels,
 // the package's solve), and a shortage shows as std::bad_alloc instead.
 // The reservation is released at once and touches no memory.
-inline bool blas_work_space_available()
+// `extra_bytes` is reserved beside it: what the caller is about to allocate
+// before the BLAS runs (a distributed factor, for one).
+inline bool blas_work_space_available(std::size_t extra_bytes = 0)
 {
 #if defined(__unix__) || defined(__APPLE__)
   const std::size_t threads = (std::max)(1u, std::thread::hardware_concurrency()) + 1;
-  const std::size_t bytes = threads * (std::size_t(160) << 20);
+  const std::size_t bytes = threads * (std::size_t(160) << 20) + extra_bytes;
   void* reserved = mmap(nullptr, bytes, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if(reserved == MAP_FAILED) return false;
   munmap(reserved, bytes);

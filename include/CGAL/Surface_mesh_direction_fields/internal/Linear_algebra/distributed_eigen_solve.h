@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
@@ -498,6 +499,25 @@ inline bool distributed_factorization_available(Mat A)
   return available == PETSC_TRUE;
 }
 
+// Whether every process has the address space for its share of the factor
+// of A and for the BLAS's work buffers. Under an address-space limit,
+// OpenBLAS's allocator retries forever when it cannot map its buffers
+// (inside MUMPS's dense kernels here, as in dense_kernels.h), so the room is
+// checked before. The share is taken as 30 times the process's entries of
+// A, above the LU fill of the meshes measured (about 13 times at 400,000
+// faces).
+inline bool room_for_distributed_factorization(Mat A)
+{
+  MatInfo info;
+  CGAL_SMDF_PETSC_CALL(MatGetInfo(A, MAT_LOCAL, &info));
+  const std::size_t factor_bytes = static_cast<std::size_t>(30. * info.nz_used * sizeof(PetscScalar));
+  int room = blas_work_space_available(factor_bytes) ? 1 : 0;
+  int everywhere = 0;
+  CGAL_SMDF_MPI_CALL(MPI_Allreduce(&room, &everywhere, 1, MPI_INT, MPI_MIN,
+                                   PetscObjectComm(reinterpret_cast<PetscObject>(A))));
+  return everywhere == 1;
+}
+
 // Whether any process's factorization or solve failed (MUMPS returns no
 // error code when it runs out of memory, only a failed preconditioner), or
 // gave a vector that is not finite.
@@ -623,7 +643,8 @@ Distributed_eigen_solve_result distributed_smallest_eigenpair(Mat A, Mat M, cons
   result.iterations += first.iterations;
   if(can_refine && result.vector &&
      (!result.converged ||
-      fraction_below(result.vector, low_magnitude_threshold(options.residual_tolerance)) > 0.))
+      fraction_below(result.vector, low_magnitude_threshold(options.residual_tolerance)) > 0.) &&
+     room_for_distributed_factorization(A))
     refine_by_inverse_iteration(A, M, distributed_eigenvalue_scale(A, M), options, options.refinement_steps, result);
   return result;
 }
