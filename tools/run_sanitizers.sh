@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer and UndefinedBehaviorSanitizer: a
-# separate build in build-sanitizers/ (-O1, -fsanitize=address,undefined, any
+# separate build in build-sanitizers/ (-O1, -fsanitize=address,undefined,float-cast-overflow, any
 # report is fatal) of the command-line program and the tests of files,
 # input and memory, then those tests (the command line, hostile input,
 # fuzzing, file formats, robustness, the linear algebra and the solver).
@@ -11,9 +11,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh tests
-flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined"
+flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all"
 cmake -S . -B build-sanitizers -DCMAKE_BUILD_TYPE=None -DSMDF_BUILD_TESTS=ON -DSMDF_BUILD_DOC=OFF \
-      -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > /dev/null
+      -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined,float-cast-overflow" > /dev/null
 targets="direction_field test_mesh_files test_io test_robustness test_linear_algebra test_prescribed_singularities test_matrices"
 cmake --build build-sanitizers -j "$(nproc)" --target $targets
 cd build-sanitizers

@@ -6,7 +6,7 @@ limit (1 GiB of address space) and a time limit; every bad case must end with
 exit status 1 and exactly one line on stderr, never a signal, a hang or a
 partial output file.
 
-    usage: test_hostile_input.py DIRECTION_FIELD OUTPUT_DIR
+    usage: test_hostile_input.py DIRECTION_FIELD OUTPUT_DIR [SHARED_MESH_DIR]
 """
 import json
 import os
@@ -19,6 +19,7 @@ import sys
 from checks import Checks
 
 BIN, OUT = sys.argv[1], sys.argv[2]
+SHARED = sys.argv[3] if len(sys.argv) > 3 else ""
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
 check = Checks()
@@ -244,6 +245,13 @@ zero = os.path.join(OUT, "zero.off")
 if not os.path.lexists(zero):
     os.symlink("/dev/zero", zero)
 expect_error([zero], "a link to /dev/zero", "device", timeout=20)
+# a sparse file of 3 GB (a valid octahedron, then zeros) is read at its size:
+# under the 1 GiB limit an out-of-memory line, never a crash
+if LIMIT:
+    sparse = write("sparse.off", off_text())
+    os.truncate(sparse, 3 << 30)
+    expect_error([sparse], "a sparse file of 3 GB", "out of memory", timeout=30)
+    os.remove(sparse)
 
 # a directory, a missing file
 expect_error([OUT], "a directory as the mesh", "directory")
@@ -425,5 +433,25 @@ for name, faces, index_sum in (("fan.off", valence, None), ("double_cone.off", 2
     check(d is not None and d["mesh_faces"] == faces and sum(d["repairs"].values()) == 0 and
           (index_sum is None or d["index_sum"] == index_sum),
           "valence %d, %s: status %d %r" % (valence, name, r.returncode, r.stderr[-200:]))
+
+# a shared mesh at any scale: coordinates times 1e-300 ... 1e300 give the
+# unscaled mesh's singular faces with the same indices
+spot = os.path.join(SHARED, "spot.off")
+if os.path.isfile(spot):
+    lines = open(spot).read().split("\n")
+    nv = int(lines[1].split()[0])
+    singular = {}
+    for factor in [1.0, 1e-300, 1e-200, 1e-80, 1e80, 1e200, 1e300]:
+        scaled = lines[:2] + [" ".join(repr(float(x) * factor) for x in line.split()) for line in lines[2:2 + nv]] + \
+                 lines[2 + nv:]
+        name = write("spot_%g.off" % factor, "\n".join(scaled))
+        listing = os.path.join(OUT, "spot_%g.sing" % factor)
+        r = run([name, "--singularity-list", listing, "--quiet"])
+        singular[factor] = [l.split()[:3] for l in open(listing) if not l.startswith("#")] if r.returncode == 0 \
+            else "status %d %r" % (r.returncode, r.stderr)
+    for factor, faces in singular.items():
+        check(faces == singular[1.0] and len(faces) > 2, "spot scaled by %g: the same singular faces" % factor)
+else:
+    print("skipped the scale sweep: no shared meshes")
 
 check.finish()
