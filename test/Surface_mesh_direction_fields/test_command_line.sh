@@ -98,16 +98,19 @@ check "exchange files: VTK, PLY, rosy, ffield, singularity list" python_checks "
 import math, sys
 out = sys.argv[1]
 tok = open(out + "/oct.vtk").read().split("\n")
-assert tok[0].startswith("# vtk DataFile") and tok[2] == "ASCII" and tok[3] == "DATASET POLYDATA"
+assert tok[0].startswith("# vtk DataFile") and tok[2] == "ASCII" and tok[3] == "DATASET UNSTRUCTURED_GRID"
 words = " ".join(tok[4:]).split()
 i = words.index("POINTS"); npts = int(words[i + 1])
 sing = [l.split() for l in open(out + "/oct.sing") if not l.startswith("#")]
-assert npts == 6 + len(sing)
-assert words[words.index("POLYGONS") + 1] == "8"
-j0 = words.index("direction_0") + 2
+assert npts == 6 and words[words.index("CELLS") + 1] == "8" and words[words.index("CELL_TYPES") + 1] == "8"
+c = words.index("singularity_index")   # the cell data (not active: a FIELD array), one value per triangle
+assert words[c - 5:c] == ["CELL_DATA", "8", "FIELD", "cell_arrays", "1"] and words[c + 1:c + 4] == ["1", "8", "double"]
+assert abs(sum(float(x) for x in words[c + 4:c + 12]) * 4 - 8) < 1e-12
+assert sum(1 for x in words[c + 4:c + 12] if float(x) != 0) == len(sing)
+j0 = words.index("direction_0") + 2    # VECTORS direction_0 double
 v0 = [float(x) for x in words[j0:j0 + 18]]
 for k in range(4):
-    j = words.index("direction_%d" % k) + 2
+    j = words.index("direction_%d" % k) + (2 if k == 0 else 4)   # the others in the FIELD block: name 3 6 double
     v = [float(x) for x in words[j:j + 18]]
     for a in range(6):
         assert abs(math.sqrt(sum(x * x for x in v[3 * a:3 * a + 3])) - 1) < 1e-12
@@ -476,6 +479,26 @@ assert not missing, missing
 for group in ["Field:", "Alignment:", "Outputs:", "Program:"]: assert group in text, group
 assert "default" in text and "Exit status" in text
 EOF2
+# Field lines of a vector field (n = 1) are traced both ways along the field
+# (backwards along its opposite): not cut into fragments, their median length
+# at least half of the cross field's on the same mesh.
+"$bin" --degree 1 --streamlines "$out/lines_1.txt" --quiet > /dev/null && \
+  "$bin" --degree 4 --streamlines "$out/lines_4.txt" --quiet > /dev/null
+check "field lines for n = 1 and 4 written" test $? -eq 0
+check "n = 1: median field-line length at least half of n = 4's" python_checks "$out" <<'EOF2'
+import math, statistics, sys
+def lengths(name):
+    result = []
+    for line in open(sys.argv[1] + "/" + name):
+        w = line.split()
+        p = [tuple(map(float, w[1 + 3 * i:4 + 3 * i])) for i in range(int(w[0]))]
+        result.append(sum(math.dist(p[i], p[i + 1]) for i in range(len(p) - 1)))
+    return result
+one, four = statistics.median(lengths("lines_1.txt")), statistics.median(lengths("lines_4.txt"))
+print("median field-line length: n = 1 %.4f, n = 4 %.4f" % (one, four))
+assert one >= 0.5 * four
+EOF2
+
 check "--version" test "$("$bin" --version | cut -d' ' -f1)" = direction_field
 
 echo "command line: $passed passed, $failed failed"

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""The exchange files of direction_field read back by independent readers:
-meshio (.vtu) and VTK's own Python module (.vtk, .vtu, .vtp), as ParaView and
-the Python ecosystem read them. The singularities, normals and n must be found
-where they should be.
+"""The exchange files of direction_field read back by independent readers,
+each with its default settings: meshio (.vtk, .vtu) and VTK's own Python
+module (.vtk, .vtu, .vtp), as ParaView and the Python ecosystem read them. The
+singularities, normals, all n directions and n must be found where they
+should be, with their names and shapes.
 
     usage: test_exchange_readers.py DIRECTION_FIELD SHARED_MESH_DIR OUTPUT_DIR
 Exit status 77 (skipped) when python3-meshio or python3-vtk9 is missing.
@@ -18,6 +19,7 @@ from checks import Checks
 
 try:
     import meshio
+    import numpy
     import vtk
     from vtk.util.numpy_support import vtk_to_numpy
 except ImportError as e:
@@ -48,12 +50,62 @@ bunny = os.path.join(SHARED, "stanford_bunny_open.off")
 if os.path.exists(bunny):
     meshes.append((bunny, None, None))
 
+def vtk_read(path):
+    """VTK's reader for the file's kind, with its default settings."""
+    reader = {".vtk": vtk.vtkUnstructuredGridReader, ".vtu": vtk.vtkXMLUnstructuredGridReader,
+              ".vtp": vtk.vtkXMLPolyDataReader}[os.path.splitext(path)[1]]()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def check_field_meshio(m, what, n, used_vertices, faces, ns, index_sum):
+    blocks = {c.type: len(c.data) for c in m.cells}
+    check(len(m.points) == used_vertices and blocks == {"triangle": faces}, what + ": points %d, cells %s" %
+          (len(m.points), blocks))
+    shapes = {k: v.shape for k, v in m.point_data.items()}
+    expected = dict({"normals": (used_vertices, 3), "magnitude": (used_vertices,), "directions": (used_vertices, 3 * n)},
+                    **{"direction_%d" % k: (used_vertices, 3) for k in range(n)})
+    check(all(shapes.get(k) == v for k, v in expected.items()), what + ": point arrays %s" % shapes)
+    if not all(shapes.get(k) == v for k, v in expected.items()):
+        return
+    index = m.cell_data["singularity_index"][0].reshape(-1)
+    check(abs(index.sum() * n - index_sum) < 1e-9 and (index != 0).sum() == ns,
+          what + ": the triangles' singularity_index sums to index_sum / n")
+    d = m.point_data["directions"]
+    check(all(numpy.array_equal(d[:, 3 * k:3 * k + 3], m.point_data["direction_%d" % k]) for k in range(n)),
+          what + ": directions holds direction_0 ... direction_{n-1}")
+    check(numpy.abs(numpy.linalg.norm(d.reshape(-1, 3), axis=1) - 1).max() < 1e-9, what + ": every direction unit")
+    normals, d0 = m.point_data["normals"], m.point_data["direction_0"]
+    check(numpy.abs(numpy.linalg.norm(normals, axis=1) - 1).max() < 1e-9 and
+          numpy.abs((normals * d0).sum(axis=1)).max() < 1e-9, what + ": unit normals orthogonal to the directions")
+
+
+def check_field_vtk(out, what, n, used_vertices, faces, index_sum, xml):
+    pd, cd = out.GetPointData(), out.GetCellData()
+    check(out.GetNumberOfPoints() == used_vertices and out.GetNumberOfCells() == faces, what + ": VTK points, cells")
+    check(pd.GetScalars() is None and cd.GetScalars() is None, what + ": no active scalars (ParaView's Glyph would "
+          "take them as its scale array)")
+    check(pd.GetVectors() is not None and pd.GetVectors().GetName() == "direction_0", what + ": direction_0 active")
+    check(not xml or (pd.GetNormals() is not None and pd.GetNormals().GetName() == "normals"), what + ": normals")
+    arrays = {pd.GetArrayName(i): pd.GetArray(i).GetNumberOfComponents() for i in range(pd.GetNumberOfArrays())}
+    expected = dict({"normals": 3, "magnitude": 1, "directions": 3 * n}, **{"direction_%d" % k: 3 for k in range(n)})
+    check(arrays == expected, what + ": VTK point arrays by default %s" % arrays)
+    check(cd.GetArray("singularity_index") is not None and
+          abs(vtk_to_numpy(cd.GetArray("singularity_index")).sum() * n - index_sum) < 1e-9,
+          what + ": cell data singularity_index")
+    fd = out.GetFieldData().GetArray("degree")
+    check(fd is not None and int(fd.GetTuple1(0)) == n, what + ": field data degree = n")
+
+
 for path, used_vertices, faces in meshes:
-    for n in [4, 3]:
+    for n in [4, 3, 1]:
         name = os.path.join(OUT, "%s_%d" % (os.path.basename(path), n))
         d = run([path, "--degree", str(n), "--vtk", name + ".vtu", "--singularity-list", name + ".sing",
-                 "--streamlines", name + "_lines.vtp"])
-        run([path, "--degree", str(n), "--vtk", name + ".vtk", "--streamlines", name + "_lines.vtu"])
+                 "--vtk-singularities", name + "_sing.vtu", "--streamlines", name + "_lines.vtp"])
+        run([path, "--degree", str(n), "--vtk", name + ".vtk", "--vtk-singularities", name + "_sing.vtk",
+             "--streamlines", name + "_lines.vtu"])
+        run([path, "--degree", str(n), "--streamlines", name + "_lines.vtk"])
         run([path, "--degree", str(n), "--streamlines", name + "_lines.obj"])
         run([path, "--degree", str(n), "--streamlines", name + "_lines.txt"])
         if d is None:
@@ -62,58 +114,33 @@ for path, used_vertices, faces in meshes:
         faces = faces or d["mesh_faces"]
         ns = d["singular_faces"]
         what = "%s n=%d" % (os.path.basename(path), n)
+        for ext in [".vtu", ".vtk"]:
+            check_field_meshio(meshio.read(name + ext), what + " meshio " + ext, n, used_vertices, faces, ns,
+                               d["index_sum"])
+            check_field_vtk(vtk_read(name + ext), what + " VTK " + ext, n, used_vertices, faces, d["index_sum"],
+                            ext == ".vtu")
+            # the singularity markers: an octahedron per singular face, coloured by its index
+            m = meshio.read(name + "_sing" + ext)
+            index = m.point_data.get("singularity_index", numpy.zeros(1)).reshape(-1)
+            check(len(m.points) == 6 * ns and {c.type: len(c.data) for c in m.cells} == ({"triangle": 8 * ns} if ns else {})
+                  and abs(index.sum() * n - 6 * d["index_sum"]) < 1e-9, what + ext + ": meshio reads the markers")
+            out = vtk_read(name + "_sing" + ext)
+            check(out.GetNumberOfCells() == 8 * ns and (ns == 0 or out.GetPointData().GetScalars().GetName() ==
+                  "singularity_index"), what + ext + ": VTK reads the markers, their index the active scalars")
 
-        # meshio: the .vtu
-        m = meshio.read(name + ".vtu")
-        blocks = {c.type: len(c.data) for c in m.cells}
-        check(len(m.points) == used_vertices + ns, what + ": meshio points %d" % len(m.points))
-        check(blocks.get("triangle") == faces and blocks.get("vertex", 0) == ns, what + ": meshio cells %s" % blocks)
-        names = set(m.point_data)
-        check({"singularity_index", "normals", "magnitude"} | {"direction_%d" % k for k in range(n)} <= names,
-              what + ": meshio point data %s" % sorted(names))
-        index = m.point_data["singularity_index"]
-        check(abs(sum(index) * n - d["index_sum"]) < 1e-9 and sum(1 for x in index if x != 0) == ns,
-              what + ": meshio singularity indices sum to index_sum / n")
-        check(int(m.field_data["degree"][0]) == n, what + ": meshio field data degree")
-        normals = m.point_data["normals"]
-        d0 = m.point_data["direction_0"]
-        check(all(abs(math.sqrt(sum(x * x for x in normals[i])) - 1) < 1e-9 and
-                  abs(sum(a * b for a, b in zip(normals[i], d0[i]))) < 1e-9 for i in range(used_vertices)),
-              what + ": unit normals orthogonal to the directions")
-
-        # VTK: the legacy .vtk and the .vtu, with their active attributes
-        for reader, ext in [(vtk.vtkPolyDataReader(), ".vtk"), (vtk.vtkXMLUnstructuredGridReader(), ".vtu")]:
-            reader.SetFileName(name + ext)
-            reader.Update()
-            out = reader.GetOutput()
-            pd = out.GetPointData()
-            check(out.GetNumberOfPoints() == used_vertices + ns, what + ext + ": VTK points")
-            check(pd.GetScalars() is not None and pd.GetScalars().GetName() == "singularity_index",
-                  what + ext + ": singularity_index is the active scalars")
-            check(pd.GetVectors() is not None and pd.GetVectors().GetName() == "direction_0",
-                  what + ext + ": direction_0 is the active vectors")
-            check(pd.GetNormals() is not None, what + ext + ": normals are the active normals")
-            check(pd.GetArray("magnitude") is not None, what + ext + ": magnitude present, not active")
-            fd = out.GetFieldData().GetArray("degree")
-            check(fd is not None and int(fd.GetTuple1(0)) == n, what + ext + ": field data degree = n")
-            values = vtk_to_numpy(pd.GetScalars())
-            check(abs(values.sum() * n - d["index_sum"]) < 1e-9, what + ext + ": point indices sum")
-            if ext == ".vtk":
-                check(out.GetNumberOfVerts() == ns and out.GetNumberOfPolys() == faces, what + ext + ": verts, polys")
-
-        # field lines: .vtp, .vtu, .obj against the text format
+        # field lines: .vtp, .vtu, .vtk, .obj against the text format
         lines = [l.split() for l in open(name + "_lines.txt") if l.strip()]
         points = sum(int(l[0]) for l in lines)
-        r = vtk.vtkXMLPolyDataReader()
-        r.SetFileName(name + "_lines.vtp")
-        r.Update()
-        check(r.GetOutput().GetNumberOfLines() == len(lines) and r.GetOutput().GetNumberOfPoints() == points,
-              what + ": .vtp lines")
-        r = vtk.vtkXMLUnstructuredGridReader()
-        r.SetFileName(name + "_lines.vtu")
-        r.Update()
-        check(r.GetOutput().GetNumberOfCells() == len(lines) and r.GetOutput().GetNumberOfPoints() == points,
-              what + ": .vtu lines")
+        out = vtk_read(name + "_lines.vtp")
+        check(out.GetNumberOfLines() == len(lines) and out.GetNumberOfPoints() == points, what + ": .vtp lines")
+        for ext in [".vtu", ".vtk"]:
+            out = vtk_read(name + "_lines" + ext)
+            check(out.GetNumberOfCells() == points - len(lines) and out.GetNumberOfPoints() == points,
+                  what + ": VTK reads the " + ext + " line segments")
+            m = meshio.read(name + "_lines" + ext)
+            ids = m.cell_data["line"][0].reshape(-1) if "line" in m.cell_data else numpy.zeros(0)
+            check([c.type for c in m.cells] == ["line"] and len(m.cells[0].data) == points - len(lines) and
+                  len(set(ids.tolist())) == len(lines), what + ": meshio keeps the " + ext + " field lines")
         obj = [l.split() for l in open(name + "_lines.obj")]
         check(sum(1 for l in obj if l and l[0] == "l") == len(lines) and
               sum(1 for l in obj if l and l[0] == "v") == points, what + ": .obj lines")

@@ -26,7 +26,7 @@ struct Options
   int degree = 4;
   double s = 0.;
   std::string directions, singularities, png, json_file;
-  std::string vtk, ply, rosy, ffield, singularity_list, streamlines, mesh_out;
+  std::string vtk, vtk_singularities, ply, rosy, ffield, singularity_list, streamlines, mesh_out;
   bool json = false, quiet = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
@@ -90,13 +90,17 @@ inline const Option_help option_help[] = {
   {"Outputs", "--json", "one line of JSON on stdout instead of the summary (keys: direction_field/README.md)"},
   {"Outputs", "--json-file FILE", "the same line of JSON in FILE"},
   {"Outputs", "--png FILE", "a picture: the shaded mesh from four sides, the field, the singularities, a legend"},
-  {"Outputs", "--vtk FILE", "the field for ParaView: .vtk (legacy) or .vtu (XML, also read by meshio)"},
+  {"Outputs", "--vtk FILE", "the field for ParaView: .vtk (legacy) or .vtu (XML; both read by VTK and meshio): "
+                            "the mesh, its n directions per vertex, the singular triangles marked"},
+  {"Outputs", "--vtk-singularities FILE", "the singularities as small markers coloured by index, to open beside "
+                                          "--vtk's file (.vtk or .vtu)"},
   {"Outputs", "--ply FILE", "PLY with per-vertex direction and magnitude, per-face singularity"},
   {"Outputs", "--rosy FILE", "the per-face cross field for QuadWild/vcglib (n = 4 only)"},
   {"Outputs", "--ffield FILE", "the per-face cross field as a vcglib frame file (n = 4 only)"},
   {"Outputs", "--singularity-list FILE", "one 'face k n x y z' per singular face"},
-  {"Outputs", "--streamlines FILE", "field lines: .vtp or .vtu (VTK polylines), .obj ('l' lines), or any other "
-                                    "name: one 'N x1 y1 z1 ... xN yN zN' per line"},
+  {"Outputs", "--streamlines FILE", "field lines: .vtp (VTK polylines), .vtu or .vtk (VTK line segments, read by "
+                                    "meshio too), .obj ('l' lines), or any other name: one 'N x1 y1 z1 ... xN yN "
+                                    "zN' per line"},
   {"Outputs", "--mesh-out FILE", "the repaired triangle mesh the outputs refer to (.off, .obj or .ply)"},
   {"Outputs", "--quiet", "say nothing on stderr while running (progress is shown only on a terminal)"},
   {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the large components spread over "
@@ -118,9 +122,11 @@ inline const char* const usage =
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
-  "                       [--vtk FILE] [--ply FILE] [--rosy FILE] [--ffield FILE] [--singularity-list FILE]\n"
-  "                       [--streamlines FILE] [--mesh-out FILE] [--quiet] [--solver default|petsc]\n"
-  "                       [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
+  "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
+  "                       [--singularity-list FILE]"
+  " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
+  "                       [--solver default|petsc]"
+  " [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -189,6 +195,7 @@ inline std::string* output_option(Options& o, const std::string& a)
   if(a == "--png") return &o.png;
   if(a == "--json-file") return &o.json_file;
   if(a == "--vtk") return &o.vtk;
+  if(a == "--vtk-singularities") return &o.vtk_singularities;
   if(a == "--ply") return &o.ply;
   if(a == "--rosy") return &o.rosy;
   if(a == "--ffield") return &o.ffield;

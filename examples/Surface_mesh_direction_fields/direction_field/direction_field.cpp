@@ -330,7 +330,7 @@ void register_outputs(const Options& o, Output_files& outputs)
 {
   const std::pair<const char*, const std::string*> paths[] = {
     {"--directions", &o.directions}, {"--singularities", &o.singularities}, {"--json-file", &o.json_file},
-    {"--png", &o.png}, {"--vtk", &o.vtk}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
+    {"--png", &o.png}, {"--vtk", &o.vtk}, {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
     {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out}};
   for(const auto& p : paths) outputs.add(p.first, *p.second, o.mesh);
   for(const auto& input : {std::make_pair("--guidance", &o.guidance), std::make_pair("--prescribe", &o.prescribe)})

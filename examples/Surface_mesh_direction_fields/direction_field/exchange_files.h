@@ -1,5 +1,5 @@
-// The files of the repaired mesh that other programs open: --vtk (.vtk or
-// .vtu), --ply, --rosy, --ffield, --singularity-list (written by the library's
+// The files of the repaired mesh that other programs open: --vtk and
+// --vtk-singularities (.vtk or .vtu), --ply, --rosy, --ffield, --singularity-list (written by the library's
 // IO/direction_field_files.h), the field lines of --streamlines in the format
 // their file name asks for, and the repaired mesh itself (--mesh-out).
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_EXCHANGE_FILES_H
@@ -50,25 +50,43 @@ inline void write_streamline_connectivity(std::ostream& os, const std::vector<SM
   w.text("</DataArray>\n");
 }
 
-// .vtp (PolyData with Lines) or .vtu (UnstructuredGrid of VTK_POLY_LINE cells).
-inline void write_streamlines_VTK_XML(std::ostream& os, const std::vector<SMDF::Streamline>& lines, bool polydata)
+// .vtp: PolyData, one poly-line per field line.
+inline void write_streamlines_VTP(std::ostream& os, const std::vector<SMDF::Streamline>& lines)
 {
   std::size_t points = 0;
   for(const SMDF::Streamline& l : lines) points += l.points.size();
-  const char* type = polydata ? "PolyData" : "UnstructuredGrid";
-  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"" << type << "\" version=\"0.1\" byte_order=\"LittleEndian\">\n<"
-     << type << ">\n<Piece NumberOfPoints=\"" << points << "\" "
-     << (polydata ? "NumberOfLines" : "NumberOfCells") << "=\"" << lines.size() << "\">\n";
+  os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+     << "<PolyData>\n<Piece NumberOfPoints=\"" << points << "\" NumberOfLines=\"" << lines.size() << "\">\n";
   write_streamline_points(os, lines);
-  os << (polydata ? "<Lines>\n" : "<Cells>\n");
+  os << "<Lines>\n";
   write_streamline_connectivity(os, lines);
-  if(!polydata)
+  os << "</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+}
+
+// .vtu or .vtk: an unstructured grid of line segments (VTK_LINE), which
+// meshio keeps (it drops poly-lines); the cell data "line" numbers the field
+// line each segment belongs to.
+inline void write_streamline_segments(std::ostream& os, const std::vector<SMDF::Streamline>& lines, int degree,
+                                      bool xml)
+{
+  SMDF::internal::VTK_grid g;
+  g.title = "field lines of a direction field of degree " + std::to_string(degree) +
+            " (CGAL Surface_mesh_direction_fields)";
+  g.degree = degree;
+  SMDF::internal::VTK_array line{"line", 1, {}};
+  for(std::size_t i = 0; i < lines.size(); ++i)
   {
-    os << "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for(std::size_t i = 0; i < lines.size(); ++i) os << "4\n";  // VTK_POLY_LINE
-    os << "</DataArray>\n";
+    const long long first = static_cast<long long>(g.points.size());
+    g.points.insert(g.points.end(), lines[i].points.begin(), lines[i].points.end());
+    for(long long j = 1; j < static_cast<long long>(lines[i].points.size()); ++j)
+    {
+      g.add_cell({first + j - 1, first + j}, 3);
+      line.values.push_back(static_cast<double>(i));
+    }
   }
-  os << (polydata ? "</Lines>\n" : "</Cells>\n") << "</Piece>\n</" << type << ">\n</VTKFile>\n";
+  g.cell_arrays.push_back(std::move(line));
+  if(xml) SMDF::internal::write_XML_grid(os, g);
+  else SMDF::internal::write_legacy_grid(os, g);
 }
 
 // OBJ: the points as "v", each line as "l i j k ...".
@@ -99,10 +117,12 @@ inline void write_streamlines_text(std::ostream& os, const std::vector<SMDF::Str
   }
 }
 
-inline void write_streamlines(const std::string& path, std::ostream& os, const std::vector<SMDF::Streamline>& lines)
+inline void write_streamlines(const std::string& path, std::ostream& os, const std::vector<SMDF::Streamline>& lines,
+                              int degree)
 {
   const std::string extension = soup_reading::lower_case_extension(path);
-  if(extension == "vtp" || extension == "vtu") write_streamlines_VTK_XML(os, lines, extension == "vtp");
+  if(extension == "vtp") write_streamlines_VTP(os, lines);
+  else if(extension == "vtu" || extension == "vtk") write_streamline_segments(os, lines, degree, extension == "vtu");
   else if(extension == "obj") write_streamlines_OBJ(os, lines);
   else write_streamlines_text(os, lines);
 }
@@ -142,7 +162,7 @@ write_exchange_files(const Options& o, const Mesh& mesh, const std::vector<Vecto
   namespace SMDF = CGAL::Surface_mesh_direction_fields;
   std::vector<SMDF::Streamline> streamlines;
   if(!o.mesh_out.empty()) exchange_files::write_mesh(o.mesh_out, outputs.stream(o.mesh_out), mesh);
-  if(o.vtk.empty() && o.ply.empty() && o.rosy.empty() && o.ffield.empty() && o.singularity_list.empty() &&
+  if(o.vtk.empty() && o.vtk_singularities.empty() && o.ply.empty() && o.rosy.empty() && o.ffield.empty() && o.singularity_list.empty() &&
      o.streamlines.empty())
     return streamlines;
   const SMDF::Direction_field_data data = SMDF::make_direction_field_data(
@@ -153,13 +173,19 @@ write_exchange_files(const Options& o, const Mesh& mesh, const std::vector<Vecto
     if(soup_reading::lower_case_extension(o.vtk) == "vtu") SMDF::IO::write_VTU(outputs.stream(o.vtk), data);
     else SMDF::IO::write_VTK(outputs.stream(o.vtk), data);
   }
+  if(!o.vtk_singularities.empty())
+  {
+    if(soup_reading::lower_case_extension(o.vtk_singularities) == "vtu")
+      SMDF::IO::write_VTU_singularities(outputs.stream(o.vtk_singularities), data);
+    else SMDF::IO::write_VTK_singularities(outputs.stream(o.vtk_singularities), data);
+  }
   if(!o.ply.empty()) SMDF::IO::write_PLY(outputs.stream(o.ply), data);
   if(!o.rosy.empty()) SMDF::IO::write_rosy(outputs.stream(o.rosy), data);
   if(!o.ffield.empty()) SMDF::IO::write_ffield(outputs.stream(o.ffield), data);
   if(!o.singularity_list.empty()) SMDF::IO::write_singularities(outputs.stream(o.singularity_list), data);
   if(o.streamlines.empty()) return streamlines;
   streamlines = SMDF::trace_streamlines(data);  // the library's defaults: evenly spaced lines
-  exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), streamlines);
+  exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), streamlines, data.degree);
   return streamlines;
 }
 

@@ -322,9 +322,36 @@ inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>&
     {
       const double a = 2. * 3.14159265358979323846 * k / s.degree;
       const V3 dk = std::cos(a) * d + std::sin(a) * e;
-      canvas.line(screen[i], view.project(s.points[i] + glyph * dk), {20, 20, 20}, 3.);
-      if(s.degree == 1)  // a vector field: a two-sided stroke with a dark head
-        canvas.line(screen[i], view.project(s.points[i] + (-0.6 * glyph) * dk), {110, 110, 110}, 3.);
+      const V3 tip = view.project(s.points[i] + glyph * dk);
+      canvas.line(screen[i], tip, {20, 20, 20}, 3.);
+      const double length = std::hypot(tip[0] - screen[i][0], tip[1] - screen[i][1]);
+      if(s.degree % 2 == 1 && length > 2.)  // odd n: the directions have a sign, an arrowhead shows it
+      {
+        const V3 along = (1. / length) * (tip - screen[i]), across = {-along[1], along[0], 0.};
+        const double head = 0.4 * length;
+        canvas.line(tip, tip + (-head) * along + (0.5 * head) * across, {20, 20, 20}, 3.);
+        canvas.line(tip, tip + (-head) * along + (-0.5 * head) * across, {20, 20, 20}, 3.);
+      }
+    }
+  }
+}
+
+// For a field of odd degree (its directions have a sign), a line is traced
+// along the field: a small arrowhead every 40 pixels of its length on screen.
+inline void draw_arrowheads(const std::vector<V3>& polyline, const View& view, Canvas& canvas)
+{
+  const double every = 40., size = 6.;
+  double travelled = 0.5 * every;
+  for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+  {
+    const V3 a = view.project(polyline[i]), b = view.project(polyline[i + 1]);
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    for(travelled += length; travelled >= every && length > 0.; travelled -= every)
+    {
+      const double t = 1. - (travelled - every) / length;  // where along a-b the mark falls
+      const V3 tip = a + t * (b - a), along = (1. / length) * (b - a), across = {-along[1], along[0], 0.};
+      canvas.line(tip, tip + (-size) * along + (0.6 * size) * across, {20, 60, 70}, 3.);
+      canvas.line(tip, tip + (-size) * along + (-0.6 * size) * across, {20, 60, 70}, 3.);
     }
   }
 }
@@ -337,8 +364,11 @@ inline void draw_view(const Scene& s, const View& view, double mean_edge, const 
   for(std::size_t i = 0; i < s.points.size(); ++i) screen[i] = view.project(s.points[i]);
   draw_surface(s, view, screen, canvas);
   for(const auto& polyline : s.polylines)
+  {
     for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
       canvas.line(view.project(polyline[i]), view.project(polyline[i + 1]), {20, 60, 70}, 3.);
+    if(s.degree % 2 == 1) draw_arrowheads(polyline, view, canvas);
+  }
   if(s.polylines.empty()) draw_glyphs(s, view, screen, mean_edge, normals, canvas);
   for(std::size_t f = 0; f < s.triangles.size() && f < s.face_index.size(); ++f)
   {

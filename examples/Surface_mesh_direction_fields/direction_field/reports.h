@@ -108,7 +108,7 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   if(input.report.any())
   {
     os << "repairs         " << input.report.summary() << "\n";
-    if(o.mesh_out.empty() && !(o.vtk + o.ply + o.rosy + o.ffield + o.singularity_list + o.streamlines).empty())
+    if(o.mesh_out.empty() && !(o.vtk + o.vtk_singularities + o.ply + o.rosy + o.ffield + o.singularity_list + o.streamlines).empty())
       os << "note            the exchange files describe the repaired mesh: --mesh-out FILE writes it\n";
     else if(!o.mesh_out.empty())
       os << "repaired mesh   " << o.mesh_out << " (the mesh the exchange files describe)\n";

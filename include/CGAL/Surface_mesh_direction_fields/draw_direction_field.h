@@ -130,17 +130,42 @@ private:
       }
     }
     const double glyph = m_data.faces.empty() ? 0. : 0.4 * edge_sum / (3. * m_data.faces.size());
+    const bool signed_directions = m_data.degree % 2 == 1;  // odd n: arrowheads show which way
     for(std::size_t v = 0; v < m_data.directions.size(); ++v)
       for(const auto& d : m_data.directions[v])
       {
         if(internal::dot(d, d) == 0.) continue;
-        const auto& p = m_data.points[v];
-        add_segment(point(p), point({p[0] + glyph * d[0], p[1] + glyph * d[1], p[2] + glyph * d[2]}),
-                    CGAL::IO::Color(20, 20, 20));
+        const internal::Vec3& p = m_data.points[v];
+        const internal::Vec3 tip = p + glyph * d;
+        add_segment(point(p), point(tip), CGAL::IO::Color(20, 20, 20));
+        if(signed_directions && v < m_data.normals.size())
+          add_arrowhead(tip, d, m_data.normals[v], 0.3 * glyph, CGAL::IO::Color(20, 20, 20));
       }
     for(const Streamline& l : m_lines)
       for(std::size_t i = 0; i + 1 < l.points.size(); ++i)
+      {
         add_segment(point(l.points[i]), point(l.points[i + 1]), CGAL::IO::Color(20, 90, 100));
+        if(signed_directions && i % 8 == 4 && i < l.faces.size())  // every few faces along the line
+        {
+          const internal::Vec3 e = l.points[i + 1] - l.points[i];
+          const auto& t = m_data.faces[l.faces[i]];
+          const internal::Vec3 normal =
+            internal::cross(m_data.points[t[1]] - m_data.points[t[0]], m_data.points[t[2]] - m_data.points[t[0]]);
+          if(internal::norm(e) > 0. && internal::norm(normal) > 0.)
+            add_arrowhead(l.points[i + 1], internal::normalized(e), internal::normalized(normal), 1.2 * glyph,
+                          CGAL::IO::Color(20, 90, 100));
+        }
+      }
+  }
+
+  // Two short strokes back from `tip`, on either side of the unit direction
+  // d in the plane of the unit normal.
+  void add_arrowhead(const internal::Vec3& tip, const internal::Vec3& d, const internal::Vec3& normal, double size,
+                     const CGAL::IO::Color& color)
+  {
+    const internal::Vec3 side = internal::cross(normal, d);
+    add_segment(point(tip), point(tip + (-size) * d + (0.6 * size) * side), color);
+    add_segment(point(tip), point(tip + (-size) * d + (-0.6 * size) * side), color);
   }
 };
 

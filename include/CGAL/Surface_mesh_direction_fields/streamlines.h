@@ -233,8 +233,8 @@ private:
     std::vector<Vec3> back_points;
     std::vector<std::size_t> back_faces;
     Streamline::End back_end = Streamline::End::LENGTH;
-    if(both_ways)
-      back_end = trace_half(f, seed, -1. * w, back_points, back_faces, separation);
+    if(both_ways)  // backwards along the opposite of the field (for n = 1, its only direction points forwards)
+      back_end = trace_half(f, seed, -1. * w, back_points, back_faces, separation, -1.);
     for(std::size_t i = back_points.size(); i-- > 0;)
     {
       line.points.push_back(back_points[i]);
@@ -298,8 +298,11 @@ private:
   }
 
   // One half line from point p in face f along w; appends to points/faces.
+  // `orientation` -1 follows the opposite of the field's directions (the
+  // backward half of a vector field's line).
   Streamline::End trace_half(std::size_t f, Vec3 p, Vec3 w, std::vector<Vec3>& points,
-                             std::vector<std::size_t>& faces, const Line_separation& separation) const
+                             std::vector<std::size_t>& faces, const Line_separation& separation,
+                             double orientation = 1.) const
   {
     double length = 0.;
     int entry = -1;  // the side through which the line entered f
@@ -326,7 +329,7 @@ private:
       if(next.first == none) return Streamline::End::BOUNDARY;
       if(m_singular[next.first]) return Streamline::End::SINGULARITY;
       // unfold w into the next face, then follow its closest field direction
-      w = closest_direction(next.first, rotate_onto(w, m_normal[f], m_normal[next.first]));
+      w = orientation * closest_direction(next.first, orientation * rotate_onto(w, m_normal[f], m_normal[next.first]));
       if(turns_back(next.first, next.second, w)) return Streamline::End::TURNED_BACK;
       p = q;
       f = next.first;
@@ -345,7 +348,9 @@ traces field lines of the per-face field of `data` (`data.face_directions`,
 see `face_directions()`): seeds at face barycentres spread by a grid of
 spacing `options.seed_spacing`; from each seed, for a field of even degree `n`,
 one line along each of the `n/2` direction families, traced both ways; for
-`n = 1` one line, both ways; for odd `n > 1`, `n` lines, forwards.
+`n = 1` one line, both ways (backwards along the opposite of the field, so
+that the whole line runs along the vectors, in the order of its points); for
+odd `n > 1`, `n` lines, forwards.
 
 Inside a face a line is straight along the face's field direction. When it
 crosses an edge, the direction is carried into the next face by unfolding

@@ -104,9 +104,11 @@ inline std::vector<double> read_VTK_field_array(std::istream& is, std::string& n
   name = next_token(is, kind);
   const std::size_t components = next_value<std::size_t>(is, kind), tuples = next_value<std::size_t>(is, kind);
   next_token(is, kind);  // type
-  if(components > 64 || tuples > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible array size");
-  std::vector<double> values(components * tuples);
-  for(double& v : values) v = next_value<double>(is, kind);
+  if(components > 3 * static_cast<std::size_t>(maximum_degree) || tuples > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible array size");
+  // grown as values are read: a count beyond the stream's end fails on the missing values, not on memory
+  std::vector<double> values;
+  values.reserve((std::min)(components * tuples, std::size_t(1) << 20));
+  for(std::size_t i = 0; i < components * tuples; ++i) values.push_back(next_value<double>(is, kind));
   return values;
 }
 
@@ -119,32 +121,38 @@ inline void skip_VTK_field_array(std::istream& is)
 struct VTK_cells
 {
   std::size_t points = 0, singularities = 0, faces = 0;
+  bool unstructured = false;  // this version's files: the singular triangles marked in the cell data
 };
 
-// POINTS, the VERTICES of the singularities and the triangles (POLYGONS):
-// data.points, data.singularity_points and data.faces.
-inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
+// The triangles of a legacy UNSTRUCTURED_GRID (CELLS, then CELL_TYPES).
+inline void read_VTK_triangle_cells(std::istream& is, VTK_cells& cells, Direction_field_data& data)
 {
   const char* kind = "VTK";
-  expect(is, "ASCII", kind);
-  expect(is, "DATASET", kind);
-  expect(is, "POLYDATA", kind);
-  std::string word = next_token(is, kind);
-  if(word == "FIELD")  // the dataset's field data (the degree, already read from the title)
+  expect(is, "CELLS", kind);
+  cells.faces = next_value<std::size_t>(is, kind);
+  next_value<std::size_t>(is, kind);
+  if(cells.faces > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of cells");
+  data.faces.resize(cells.faces);
+  for(auto& t : data.faces)
   {
-    next_token(is, kind);
-    const std::size_t arrays = next_value<std::size_t>(is, kind);
-    for(std::size_t a = 0; a < arrays; ++a) skip_VTK_field_array(is);
-    word = next_token(is, kind);
+    if(next_value<int>(is, kind) != 3) throw Invalid_input_error("VTK file: a cell is not a triangle");
+    for(auto& c : t)
+      if((c = next_value<std::size_t>(is, kind)) >= cells.points)
+        throw Invalid_input_error("VTK file: a vertex index is out of range");
   }
-  if(word != "POINTS") throw Invalid_input_error("VTK file: expected POINTS");
-  VTK_cells cells;
-  cells.points = next_value<std::size_t>(is, kind);
-  if(cells.points > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
-  next_token(is, kind);  // type
-  std::vector<Vec3> points(cells.points);
-  for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
-  word = next_token(is, kind);
+  expect(is, "CELL_TYPES", kind);
+  if(next_value<std::size_t>(is, kind) != cells.faces) throw Invalid_input_error("VTK file: CELL_TYPES miscounted");
+  for(std::size_t f = 0; f < cells.faces; ++f)
+    if(next_value<int>(is, kind) != 5) throw Invalid_input_error("VTK file: a cell is not a triangle");
+}
+
+// The VERTICES of the singularity points and the triangles (POLYGONS) of
+// the PolyData files of earlier versions.
+inline void read_VTK_polydata_cells(std::istream& is, VTK_cells& cells, std::vector<Vec3>& points,
+                                    Direction_field_data& data)
+{
+  const char* kind = "VTK";
+  std::string word = next_token(is, kind);
   if(word == "VERTICES")
   {
     cells.singularities = next_value<std::size_t>(is, kind);
@@ -157,18 +165,45 @@ inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
   next_value<std::size_t>(is, kind);
   if(cells.singularities > cells.points) throw Invalid_input_error("VTK file: more singularities than points");
   const std::size_t nv = cells.points - cells.singularities;
-  data.points.assign(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(nv));
   data.singularity_points.assign(points.begin() + static_cast<std::ptrdiff_t>(nv), points.end());
+  points.resize(nv);
   data.faces.resize(cells.faces);
   for(auto& t : data.faces)
   {
     if(next_value<int>(is, kind) != 3) throw Invalid_input_error("VTK file: a polygon is not a triangle");
     for(auto& c : t)
-    {
-      c = next_value<std::size_t>(is, kind);
-      if(c >= nv) throw Invalid_input_error("VTK file: a vertex index is out of range");
-    }
+      if((c = next_value<std::size_t>(is, kind)) >= nv) throw Invalid_input_error("VTK file: a vertex index is out of range");
   }
+}
+
+// POINTS and the cells: data.points, data.faces (and, in PolyData files,
+// data.singularity_points).
+inline VTK_cells read_VTK_geometry(std::istream& is, Direction_field_data& data)
+{
+  const char* kind = "VTK";
+  expect(is, "ASCII", kind);
+  expect(is, "DATASET", kind);
+  VTK_cells cells;
+  const std::string type = next_token(is, kind);
+  if(type != "UNSTRUCTURED_GRID" && type != "POLYDATA") throw Invalid_input_error("VTK file: unexpected " + type);
+  cells.unstructured = type == "UNSTRUCTURED_GRID";
+  std::string word = next_token(is, kind);
+  if(word == "FIELD")  // the dataset's field data (the degree, already read from the title)
+  {
+    next_token(is, kind);
+    const std::size_t arrays = next_value<std::size_t>(is, kind);
+    for(std::size_t a = 0; a < arrays; ++a) skip_VTK_field_array(is);
+    word = next_token(is, kind);
+  }
+  if(word != "POINTS") throw Invalid_input_error("VTK file: expected POINTS");
+  cells.points = next_value<std::size_t>(is, kind);
+  if(cells.points > (std::size_t(1) << 32)) throw Invalid_input_error("VTK file: implausible number of points");
+  next_token(is, kind);  // type
+  std::vector<Vec3> points(cells.points);
+  for(auto& p : points) for(double& x : p) x = next_value<double>(is, kind);
+  if(cells.unstructured) read_VTK_triangle_cells(is, cells, data);
+  else read_VTK_polydata_cells(is, cells, points, data);
+  data.points = std::move(points);
   return cells;
 }
 
@@ -200,21 +235,29 @@ inline void read_VTK_scalars(std::istream& is, const std::string& name, const VT
       if(v >= nv) singularity_values.push_back(value);
     }
   }
-  else if(name == "singularity_index")  // per cell (files before the point data had it): the same values
+  else if(name == "singularity_index")  // per cell
   {
-    std::vector<double> cell_values;
-    for(std::size_t c = 0; c < cells.singularities + cells.faces; ++c)
-    {
-      const double value = next_value<double>(is, kind);
-      if(c < cells.singularities) cell_values.push_back(value);
-    }
-    if(singularity_values.empty()) singularity_values = cell_values;
+    std::vector<double> cell_values(cells.singularities + cells.faces);
+    for(double& value : cell_values) value = next_value<double>(is, kind);
+    if(cells.unstructured) singularity_values = std::move(cell_values);  // one per triangle
+    else if(singularity_values.empty())  // PolyData files before the point data had it: the singularity cells first
+      singularity_values.assign(cell_values.begin(), cell_values.begin() + static_cast<std::ptrdiff_t>(cells.singularities));
   }
   else throw Invalid_input_error("VTK file: unexpected data " + name);
 }
 
-// POINT_DATA and CELL_DATA: the directions, the magnitudes, and the index of
-// each singularity cell (returned).
+// The k-th direction of every point, from the array "direction_k".
+inline void read_VTK_direction(const std::string& name, const std::vector<double>& values, Direction_field_data& data)
+{
+  const int k = parse_value<int>(name.substr(name.find('_') + 1), "VTK");
+  if(k < 0 || k >= data.degree) throw Invalid_input_error("VTK file: unexpected " + name);
+  for(std::size_t v = 0; v < data.directions.size(); ++v)
+    data.directions[v][static_cast<std::size_t>(k)] = {values[3 * v], values[3 * v + 1], values[3 * v + 2]};
+}
+
+// POINT_DATA and CELL_DATA: the directions, the magnitudes, and the
+// singularity indices (returned): one per triangle in this version's files,
+// one per singularity point in PolyData files.
 inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cells, Direction_field_data& data)
 {
   const char* kind = "VTK";
@@ -248,7 +291,7 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
       next_token(is, kind);
       for(std::size_t i = 0; i < 3 * cells.points; ++i) next_value<double>(is, kind);
     }
-    else if(word == "FIELD")  // the point data that is not an attribute: the magnitudes
+    else if(word == "FIELD")  // the arrays that are not attributes: the magnitudes, the directions after the first
     {
       next_token(is, kind);
       const std::size_t arrays = next_value<std::size_t>(is, kind);
@@ -256,8 +299,13 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
       {
         std::string name;
         const std::vector<double> values = read_VTK_field_array(is, name);
-        if(name == "magnitude" && !cell_data && values.size() == cells.points)
+        if(cell_data && name == "singularity_index" && cells.unstructured && values.size() == cells.faces)
+          singularity_values = values;  // one per triangle
+        else if(cell_data) continue;
+        else if(name == "magnitude" && values.size() == cells.points)
           data.magnitudes.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(nv));
+        else if(name.rfind("direction_", 0) == 0 && values.size() == 3 * cells.points)
+          read_VTK_direction(name, values, data);
       }
     }
     else if(word == "CELL_DATA")
@@ -271,8 +319,23 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
   return singularity_values;
 }
 
-// The singular faces: the face whose barycentre is the singularity point
-// (write_VTK() writes it from there).
+// The singular faces of this version's files: the triangles whose index is not 0.
+inline void singular_faces_from_cells(const std::vector<double>& face_values, Direction_field_data& data)
+{
+  if(face_values.size() != data.faces.size()) throw Invalid_input_error("VTK file: no singularity_index per triangle");
+  for(std::size_t f = 0; f < face_values.size(); ++f)
+  {
+    const double k = face_values[f] * data.degree;
+    if(!(std::abs(k) < 1e9) || std::abs(k - std::round(k)) > 1e-6)
+      throw Invalid_input_error("VTK file: a singularity_index is not a multiple of 1/n");
+    if(std::lround(k) == 0) continue;
+    data.singularities.emplace_back(f, static_cast<int>(std::lround(k)));
+    data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
+  }
+}
+
+// The singular faces of PolyData files: the face whose barycentre is the
+// singularity point (the writer wrote it from there).
 inline void match_singular_faces(const std::vector<double>& singularity_values, Direction_field_data& data)
 {
   const std::size_t ns = data.singularity_points.size();
@@ -293,96 +356,236 @@ inline void match_singular_faces(const std::vector<double>& singularity_values, 
   }
 }
 
-// What the VTK files show: the vertices that belong to a face (in order),
-// then the barycentre of each singular face.
-struct VTK_layout
+// A dataset as both VTK formats write it: points, cells (flat
+// connectivity, the end of each cell, its VTK type) and named arrays, the
+// active ones named apart.
+struct VTK_array
 {
-  std::vector<std::size_t> used;                     // the vertex of `data` of each written vertex
-  std::vector<std::array<std::size_t, 3> > faces;    // the triangles, renumbered
-
-  explicit VTK_layout(const Direction_field_data& data)
-  {
-    const std::size_t none = std::numeric_limits<std::size_t>::max();
-    std::vector<std::size_t> number(data.points.size(), none);
-    for(const auto& t : data.faces) for(std::size_t v : t) number[v] = 0;
-    for(std::size_t v = 0; v < number.size(); ++v)
-      if(number[v] != none) { number[v] = used.size(); used.push_back(v); }
-    faces.reserve(data.faces.size());
-    for(const auto& t : data.faces) faces.push_back({number[t[0]], number[t[1]], number[t[2]]});
-  }
-
-  long long vertices() const { return static_cast<long long>(used.size()); }
-  long long triangles() const { return static_cast<long long>(faces.size()); }
-  static long long singular_points(const Direction_field_data& data)
-  {
-    return static_cast<long long>(data.singularities.size());
-  }
-
-  // f(point, normal, singularity index, i) for every written point.
-  template <typename F>
-  void for_each_point(const Direction_field_data& data, const F& f) const
-  {
-    const Vec3 zero = {0., 0., 0.};
-    for(std::size_t i = 0; i < used.size(); ++i)
-      f(data.points[used[i]], data.normals.empty() ? zero : data.normals[used[i]], 0., i);
-    for(std::size_t i = 0; i < data.singularities.size(); ++i)
-    {
-      const auto& face = data.faces[data.singularities[i].first];
-      f(data.singularity_points[i], triangle_unit_normal(data.points, face),
-        static_cast<double>(data.singularities[i].second) / data.degree, used.size() + i);
-    }
-  }
+  std::string name;
+  int components = 1;
+  std::vector<double> values;  // tuple after tuple
 };
 
-// The k-th direction of every written point (zero on the singularity points).
-inline void write_directions(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout, int k)
+struct VTK_grid
 {
-  for(std::size_t v : layout.used)
+  std::string title;  // the legacy file's second line
+  int degree = 1;     // field data "degree"
+  std::vector<Vec3> points;
+  std::vector<long long> connectivity, cell_ends;
+  std::vector<int> cell_types;  // 1 vertex, 3 line, 4 poly-line, 5 triangle
+  std::vector<VTK_array> point_arrays, cell_arrays;
+  std::string point_scalars, point_vectors, point_normals, cell_scalars;  // active attributes ("" = none)
+
+  void add_cell(std::initializer_list<long long> ids, int type)
   {
-    const auto& d = data.directions[v][static_cast<std::size_t>(k)];
-    w.line(d[0], d[1], d[2]);
+    connectivity.insert(connectivity.end(), ids.begin(), ids.end());
+    cell_ends.push_back(static_cast<long long>(connectivity.size()));
+    cell_types.push_back(type);
   }
-  for(std::size_t i = 0; i < data.singularities.size(); ++i) w.text("0 0 0\n");
-}
+  long long cell_count() const { return static_cast<long long>(cell_ends.size()); }
+};
 
-inline void write_magnitudes(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
+inline void write_VTK_values(Number_writer& w, const VTK_array& a)
 {
-  for(std::size_t v : layout.used) w.number(data.magnitudes[v]).end_line();
-  for(std::size_t i = 0; i < data.singularities.size(); ++i) w.text("0\n");
-}
-
-// The index k / n of the singularity cells, then 0 for every triangle.
-inline void write_cell_indices(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
-{
-  for(const auto& s : data.singularities) w.number(static_cast<double>(s.second) / data.degree).end_line();
-  for(std::size_t f = 0; f < layout.faces.size(); ++f) w.text("0\n");
-}
-
-inline void write_VTU_array_header(Number_writer& w, const std::string& name, int components)
-{
-  w.text("<DataArray type=\"Float64\" Name=\"").text(name).text("\" NumberOfComponents=\"").integer(components)
-    .text("\" format=\"ascii\">\n");
-}
-
-// The point data of write_VTU().
-inline void write_VTU_point_arrays(Number_writer& w, const Direction_field_data& data, const VTK_layout& layout)
-{
-  write_VTU_array_header(w, "singularity_index", 1);
-  layout.for_each_point(data, [&](const Vec3&, const Vec3&, double index, std::size_t) { w.number(index).end_line(); });
-  w.text("</DataArray>\n");
-  write_VTU_array_header(w, "normals", 3);
-  layout.for_each_point(data, [&](const Vec3&, const Vec3& n, double, std::size_t) { w.line(n[0], n[1], n[2]); });
-  w.text("</DataArray>\n");
-  for(int k = 0; k < data.degree; ++k)
+  for(std::size_t i = 0; i < a.values.size(); ++i)
   {
-    write_VTU_array_header(w, "direction_" + std::to_string(k), 3);
-    write_directions(w, data, layout, k);
+    w.number(a.values[i]);
+    if((i + 1) % static_cast<std::size_t>(a.components) == 0) w.end_line(); else w.space();
+  }
+}
+
+inline void write_legacy_cells(Number_writer& w, const VTK_grid& g)
+{
+  w.text("CELLS ").integer(g.cell_count()).space()
+    .integer(g.cell_count() + static_cast<long long>(g.connectivity.size())).end_line();
+  long long begin = 0;
+  for(long long end : g.cell_ends)
+  {
+    w.integer(end - begin);
+    for(long long i = begin; i < end; ++i) w.space().integer(g.connectivity[static_cast<std::size_t>(i)]);
+    w.end_line();
+    begin = end;
+  }
+  w.text("CELL_TYPES ").integer(g.cell_count()).end_line();
+  for(int type : g.cell_types) w.integer(type).end_line();
+}
+
+// One block of legacy data: the active attributes by their keywords, every
+// other array in a FIELD block (which VTK's reader returns by default, as
+// it does not the VECTORS after the first).
+inline void write_legacy_data(Number_writer& w, const char* block, long long tuples,
+                              const std::vector<VTK_array>& arrays, const std::string& scalars,
+                              const std::string& vectors, const std::string& normals)
+{
+  if(arrays.empty()) return;
+  w.text(block).space().integer(tuples).end_line();
+  std::size_t plain = 0;
+  for(const VTK_array& a : arrays)
+  {
+    if(a.name == scalars) w.text("SCALARS ").text(a.name).text(" double 1\nLOOKUP_TABLE default\n");
+    else if(a.name == vectors) w.text("VECTORS ").text(a.name).text(" double\n");
+    else if(a.name == normals) w.text("NORMALS ").text(a.name).text(" double\n");
+    else { ++plain; continue; }
+    write_VTK_values(w, a);
+  }
+  if(plain == 0) return;
+  w.text("FIELD ").text(block[0] == 'P' ? "point_arrays " : "cell_arrays ").integer(static_cast<long long>(plain))
+    .end_line();
+  for(const VTK_array& a : arrays)
+    if(a.name != scalars && a.name != vectors && a.name != normals)
+    {
+      w.text(a.name).space().integer(a.components).space().integer(tuples).text(" double\n");
+      write_VTK_values(w, a);
+    }
+}
+
+// The legacy format as an UNSTRUCTURED_GRID (ParaView, VTK and meshio read it).
+inline void write_legacy_grid(std::ostream& os, const VTK_grid& g)
+{
+  Number_writer w(os);
+  const long long np = static_cast<long long>(g.points.size());
+  w.text("# vtk DataFile Version 3.0\n").text(g.title).text("\nASCII\nDATASET UNSTRUCTURED_GRID\n")
+    .text("FIELD FieldData 1\ndegree 1 1 int\n").integer(g.degree).end_line();
+  w.text("POINTS ").integer(np).text(" double\n");
+  for(const Vec3& p : g.points) w.line(p[0], p[1], p[2]);
+  write_legacy_cells(w, g);
+  // the normals as a plain array: meshio's legacy reader refuses a NORMALS block
+  write_legacy_data(w, "POINT_DATA", np, g.point_arrays, g.point_scalars, g.point_vectors, "");
+  write_legacy_data(w, "CELL_DATA", g.cell_count(), g.cell_arrays, g.cell_scalars, "", "");
+}
+
+inline void write_XML_arrays(Number_writer& w, const char* block, const std::vector<VTK_array>& arrays,
+                             const std::string& scalars, const std::string& vectors, const std::string& normals)
+{
+  w.text("<").text(block);
+  if(!scalars.empty()) w.text(" Scalars=\"").text(scalars).text("\"");
+  if(!vectors.empty()) w.text(" Vectors=\"").text(vectors).text("\"");
+  if(!normals.empty()) w.text(" Normals=\"").text(normals).text("\"");
+  w.text(">\n");
+  for(const VTK_array& a : arrays)
+  {
+    w.text("<DataArray type=\"Float64\" Name=\"").text(a.name);
+    if(a.components > 1) w.text("\" NumberOfComponents=\"").integer(a.components);  // else meshio adds an axis
+    w.text("\" format=\"ascii\">\n");
+    write_VTK_values(w, a);
     w.text("</DataArray>\n");
   }
-  if(data.magnitudes.empty()) return;
-  write_VTU_array_header(w, "magnitude", 1);
-  write_magnitudes(w, data, layout);
-  w.text("</DataArray>\n");
+  w.text("</").text(block).text(">\n");
+}
+
+// The XML UnstructuredGrid format (.vtu).
+inline void write_XML_grid(std::ostream& os, const VTK_grid& g)
+{
+  Number_writer w(os);
+  w.text("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+         "<UnstructuredGrid>\n<FieldData>\n"
+         "<DataArray type=\"Int32\" Name=\"degree\" NumberOfTuples=\"1\" format=\"ascii\">")
+    .integer(g.degree).text("</DataArray>\n</FieldData>\n<Piece NumberOfPoints=\"")
+    .integer(static_cast<long long>(g.points.size())).text("\" NumberOfCells=\"").integer(g.cell_count()).text("\">\n");
+  write_XML_arrays(w, "PointData", g.point_arrays, g.point_scalars, g.point_vectors, g.point_normals);
+  write_XML_arrays(w, "CellData", g.cell_arrays, g.cell_scalars, "", "");
+  w.text("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+  for(const Vec3& p : g.points) w.line(p[0], p[1], p[2]);
+  w.text("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+  for(long long id : g.connectivity) w.integer(id).end_line();
+  w.text("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+  for(long long end : g.cell_ends) w.integer(end).end_line();
+  w.text("</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+  for(int type : g.cell_types) w.integer(type).end_line();
+  w.text("</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+}
+
+// The field as a dataset: the vertices that belong to a face (renumbered in
+// their order) and the triangles. Every point carries real directions (the
+// singularities are marked on their triangles, not by extra points), and no
+// array is the active scalars: ParaView's glyph filter takes them as its
+// scale array (point scalars shrink the arrows to nothing, cell scalars make
+// it draw none).
+inline VTK_grid field_grid(const Direction_field_data& data)
+{
+  VTK_grid g;
+  g.title = "direction field of degree " + std::to_string(data.degree) + " (CGAL Surface_mesh_direction_fields)";
+  g.degree = data.degree;
+  const std::size_t none = std::numeric_limits<std::size_t>::max(), n = static_cast<std::size_t>(data.degree);
+  std::vector<std::size_t> number(data.points.size(), none), used;
+  for(const auto& t : data.faces) for(std::size_t v : t) number[v] = 0;
+  for(std::size_t v = 0; v < number.size(); ++v)
+    if(number[v] != none) { number[v] = used.size(); used.push_back(v); }
+  for(std::size_t v : used) g.points.push_back(data.points[v]);
+  for(const auto& t : data.faces)
+    g.add_cell({static_cast<long long>(number[t[0]]), static_cast<long long>(number[t[1]]),
+                static_cast<long long>(number[t[2]])}, 5);
+  VTK_array normals{"normals", 3, {}}, all{"directions", 3 * data.degree, {}}, magnitude{"magnitude", 1, {}};
+  std::vector<VTK_array> direction(n);
+  for(std::size_t k = 0; k < n; ++k) direction[k] = VTK_array{"direction_" + std::to_string(k), 3, {}};
+  for(std::size_t v : used)
+  {
+    const Vec3 normal = data.normals.empty() ? Vec3{0., 0., 0.} : data.normals[v];
+    normals.values.insert(normals.values.end(), normal.begin(), normal.end());
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const Vec3& d = data.directions[v][k];
+      direction[k].values.insert(direction[k].values.end(), d.begin(), d.end());
+      all.values.insert(all.values.end(), d.begin(), d.end());
+    }
+    if(!data.magnitudes.empty()) magnitude.values.push_back(data.magnitudes[v]);
+  }
+  g.point_arrays.push_back(std::move(normals));
+  for(VTK_array& a : direction) g.point_arrays.push_back(std::move(a));
+  g.point_arrays.push_back(std::move(all));
+  if(!data.magnitudes.empty()) g.point_arrays.push_back(std::move(magnitude));
+  VTK_array index{"singularity_index", 1, std::vector<double>(data.faces.size(), 0.)};
+  for(const auto& s : data.singularities) index.values[s.first] = static_cast<double>(s.second) / data.degree;
+  g.cell_arrays.push_back(std::move(index));
+  g.point_vectors = "direction_0";
+  g.point_normals = "normals";
+  return g;
+}
+
+// The singularities as markers a viewer shows without a filter: a small
+// octahedron (radius 1/100 of the bounding box's diagonal) around each
+// singular face's barycentre, its index k / n on its points and triangles
+// (the active scalars, so that a viewer colours them by it).
+inline VTK_grid singularity_marker_grid(const Direction_field_data& data)
+{
+  VTK_grid g;
+  g.title = "singularities of a direction field of degree " + std::to_string(data.degree) +
+            " (CGAL Surface_mesh_direction_fields)";
+  g.degree = data.degree;
+  Vec3 low = {0., 0., 0.}, high = {0., 0., 0.};
+  for(std::size_t i = 0; i < data.points.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+    {
+      low[c] = i == 0 ? data.points[i][c] : (std::min)(low[c], data.points[i][c]);
+      high[c] = i == 0 ? data.points[i][c] : (std::max)(high[c], data.points[i][c]);
+    }
+  const double radius = 0.01 * norm(high - low);
+  VTK_array point_index{"singularity_index", 1, {}}, cell_index{"singularity_index", 1, {}};
+  for(std::size_t i = 0; i < data.singularities.size(); ++i)
+  {
+    const double index = static_cast<double>(data.singularities[i].second) / data.degree;
+    const Vec3 centre = barycentre(data.points, data.faces[data.singularities[i].first]);
+    const long long first = static_cast<long long>(g.points.size());
+    for(int axis = 0; axis < 3; ++axis)
+      for(double sign : {1., -1.})
+      {
+        Vec3 p = centre;
+        p[axis] += sign * radius;
+        g.points.push_back(p);
+        point_index.values.push_back(index);
+      }
+    // corners 0/1: +x/-x, 2/3: +y/-y, 4/5: +z/-z; the eight faces outward
+    for(const auto& t : {std::array<int, 3>{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5},
+                         {0, 3, 5}})
+    {
+      g.add_cell({first + t[0], first + t[1], first + t[2]}, 5);
+      cell_index.values.push_back(index);
+    }
+  }
+  g.point_arrays.push_back(std::move(point_index));
+  g.cell_arrays.push_back(std::move(cell_index));
+  g.point_scalars = g.cell_scalars = "singularity_index";
+  return g;
 }
 
 } // namespace internal
@@ -395,122 +598,89 @@ namespace IO {
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsIO
 
-writes the field as a legacy VTK PolyData file (ASCII), which ParaView and
-VTK open. Points: the vertices that belong to a face (renumbered in their
-order; a vertex of no face is left out), then the barycentre of each singular
-face, with one `VERTICES` cell each; cells: those vertices, then the
-triangles (`POLYGONS`). Data:
+writes the field as a legacy VTK file (ASCII, an `UNSTRUCTURED_GRID`), which
+ParaView, VTK and meshio open. Points: the vertices that belong to a face
+(renumbered in their order; a vertex of no face is left out); cells: the
+triangles. Data, chosen so that a viewer's defaults show the field:
 - field data `degree` (the integer `n`);
-- point data `singularity_index` (the active scalars: the index `k / n` on the
-  singularity points, 0 on the vertices), `normals` (the active normals),
-  `direction_0` ... `direction_{n-1}` (`direction_0` is the active vectors;
-  zero on the singularity points), and `magnitude` (if known) as a plain
-  array, so that it is not taken for the glyphs' scale;
-- cell data `singularity_index` (the same index on the singularity cells, 0 on
-  the triangles).
+- point data `normals` (the unit normals), `direction_0` (the active
+  vectors: a glyph filter orients its arrows by it), `direction_1` ...
+  `direction_{n-1}`, `directions` (the `n` directions of each point in one
+  tuple of `3n` components), and `magnitude` (if known);
+- cell data `singularity_index`: `k / n` on a singular triangle, 0 on the
+  others.
 
-Coordinates are written with 17 significant digits, so that reading back gives
-the same doubles.
+No array is the active scalars: ParaView's Glyph filter takes them as its
+scale array, so that its default settings would draw no arrows.
+
+The singularities as markers of their own are written by
+`write_VTK_singularities()`. Coordinates are written with 17 significant
+digits, so that reading back gives the same doubles.
 
 \param os the output stream
 \param data the field to write
 */
 inline void write_VTK(std::ostream& os, const Direction_field_data& data)
 {
-  const internal::VTK_layout layout(data);
-  const long long nv = layout.vertices(), ns = layout.singular_points(data), nf = layout.triangles();
-  internal::Number_writer w(os);
-  w.text("# vtk DataFile Version 3.0\ndirection field of degree ").integer(data.degree)
-    .text(" (CGAL Surface_mesh_direction_fields)\nASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n")
-    .integer(data.degree).end_line();
-  w.text("POINTS ").integer(nv + ns).text(" double\n");
-  layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
-    w.line(p[0], p[1], p[2]);
-  });
-  if(ns > 0)
-  {
-    w.text("VERTICES ").integer(ns).space().integer(2 * ns).end_line();
-    for(long long i = 0; i < ns; ++i) w.text("1 ").integer(nv + i).end_line();
-  }
-  w.text("POLYGONS ").integer(nf).space().integer(4 * nf).end_line();
-  for(const auto& t : layout.faces)
-    w.text("3 ").integer(static_cast<long long>(t[0])).space().integer(static_cast<long long>(t[1])).space()
-      .integer(static_cast<long long>(t[2])).end_line();
-  w.text("POINT_DATA ").integer(nv + ns).text("\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n");
-  layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3&, double index, std::size_t) {
-    w.number(index).end_line();
-  });
-  w.text("NORMALS normals double\n");
-  layout.for_each_point(data, [&](const internal::Vec3&, const internal::Vec3& n, double, std::size_t) {
-    w.line(n[0], n[1], n[2]);
-  });
-  for(int k = 0; k < data.degree; ++k)
-  {
-    w.text("VECTORS direction_").integer(k).text(" double\n");
-    internal::write_directions(w, data, layout, k);
-  }
-  if(!data.magnitudes.empty())
-  {
-    w.text("FIELD point_arrays 1\nmagnitude 1 ").integer(nv + ns).text(" double\n");
-    internal::write_magnitudes(w, data, layout);
-  }
-  // cells are ordered vertices first, then polygons
-  w.text("CELL_DATA ").integer(ns + nf).text("\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n");
-  internal::write_cell_indices(w, data, layout);
+  internal::write_legacy_grid(os, internal::field_grid(data));
 }
 
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsIO
 
-writes the field as a VTK XML UnstructuredGrid file (`.vtu`, ASCII), which
-ParaView, VTK and meshio open. It holds what `write_VTK()` writes, the same
-points, cells (VTK_VERTEX cells for the singularities, VTK_TRIANGLE cells for
-the faces) and arrays, with `singularity_index`, `direction_0` and `normals` as
-the active scalars, vectors and normals.
+writes what `write_VTK()` writes as a VTK XML UnstructuredGrid file (`.vtu`,
+ASCII), which ParaView, VTK and meshio open: the same points, triangles and
+arrays, with the same active attributes (and `normals` as the active normals).
 
 \param os the output stream
 \param data the field to write
 */
 inline void write_VTU(std::ostream& os, const Direction_field_data& data)
 {
-  const internal::VTK_layout layout(data);
-  const long long nv = layout.vertices(), ns = layout.singular_points(data), nf = layout.triangles();
-  internal::Number_writer w(os);
-  w.text("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-         "<UnstructuredGrid>\n<FieldData>\n"
-         "<DataArray type=\"Int32\" Name=\"degree\" NumberOfTuples=\"1\" format=\"ascii\">")
-    .integer(data.degree).text("</DataArray>\n</FieldData>\n<Piece NumberOfPoints=\"").integer(nv + ns)
-    .text("\" NumberOfCells=\"").integer(ns + nf)
-    .text("\">\n<PointData Scalars=\"singularity_index\" Vectors=\"direction_0\" Normals=\"normals\">\n");
-  internal::write_VTU_point_arrays(w, data, layout);
-  w.text("</PointData>\n<CellData Scalars=\"singularity_index\">\n"
-         "<DataArray type=\"Float64\" Name=\"singularity_index\" format=\"ascii\">\n");
-  internal::write_cell_indices(w, data, layout);
-  w.text("</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-  layout.for_each_point(data, [&](const internal::Vec3& p, const internal::Vec3&, double, std::size_t) {
-    w.line(p[0], p[1], p[2]);
-  });
-  w.text("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  for(long long i = 0; i < ns; ++i) w.integer(nv + i).end_line();
-  for(const auto& t : layout.faces)
-    w.integer(static_cast<long long>(t[0])).space().integer(static_cast<long long>(t[1])).space()
-      .integer(static_cast<long long>(t[2])).end_line();
-  w.text("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  for(long long i = 1; i <= ns; ++i) w.integer(i).end_line();
-  for(long long f = 1; f <= nf; ++f) w.integer(ns + 3 * f).end_line();
-  w.text("</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for(long long i = 0; i < ns; ++i) w.text("1\n");  // VTK_VERTEX
-  for(long long f = 0; f < nf; ++f) w.text("5\n");  // VTK_TRIANGLE
-  w.text("</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+  internal::write_XML_grid(os, internal::field_grid(data));
 }
 
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsIO
 
-reads a file written by `write_VTK()` back. The singular faces are recovered
-by matching each singularity point to the barycentre of a face (they are
-written from it); the per-face directions are recomputed by
-`face_directions()`.
+writes the singularities as a legacy VTK file (an `UNSTRUCTURED_GRID`) of
+markers a viewer shows as they are: around the barycentre of each singular
+face a small octahedron (of radius 1/100 of the bounding box's diagonal),
+whose points and triangles carry its index `k / n` as `singularity_index`
+(the active scalars, so that ParaView colours the markers by their index).
+Field data `degree` is `n`. Opened together with the file of `write_VTK()`,
+it shows the singularities at a size one sees on the whole mesh.
+
+\param os the output stream
+\param data the field whose singularities are written
+*/
+inline void write_VTK_singularities(std::ostream& os, const Direction_field_data& data)
+{
+  internal::write_legacy_grid(os, internal::singularity_marker_grid(data));
+}
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsIO
+
+writes what `write_VTK_singularities()` writes as a VTK XML UnstructuredGrid
+file (`.vtu`).
+
+\param os the output stream
+\param data the field whose singularities are written
+*/
+inline void write_VTU_singularities(std::ostream& os, const Direction_field_data& data)
+{
+  internal::write_XML_grid(os, internal::singularity_marker_grid(data));
+}
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsIO
+
+reads a file written by `write_VTK()` back: the singular faces are the
+triangles whose `singularity_index` is not 0. The PolyData files of earlier
+versions are read too (their singular faces recovered by matching each
+singularity point to the barycentre of a face). The per-face directions are
+recomputed by `face_directions()`.
 
 \throws Invalid_input_error if the stream is not such a file
 \param is the input stream
@@ -532,7 +702,8 @@ inline Direction_field_data read_VTK(std::istream& is)
     const internal::Vec3& d = data.directions[v][0];
     data.normals[v] = internal::normalized(normal[v] - internal::dot(normal[v], d) * d);
   }
-  internal::match_singular_faces(singularity_values, data);
+  if(cells.unstructured) internal::singular_faces_from_cells(singularity_values, data);
+  else internal::match_singular_faces(singularity_values, data);
   data.face_directions = face_directions(data);
   return data;
 }
