@@ -1,0 +1,241 @@
+// Python keyword arguments -> Options, and Options -> the named parameters
+// of Globally_optimal_direction_field::compute(). Named parameters are
+// types, so each optional one present or absent is a branch taken at run
+// time (guidance, lambda_t or alignment_weight, constraints, features,
+// prescribed singularities).
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_OPTIONS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_OPTIONS_H
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+
+namespace {
+
+// The property maps of one computation, on the module's own copy of the mesh.
+struct Maps
+{
+  Mesh::Property_map<Vertex_index, Kernel::Vector_3> direction, guidance, constraint;
+  Mesh::Property_map<Vertex_index, bool> constrained;
+  Mesh::Property_map<Vertex_index, double> magnitude;
+  Mesh::Property_map<Edge_index, bool> feature;
+
+  explicit Maps(Mesh& mesh)
+  {
+    direction = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_direction").first;
+    guidance = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_guidance").first;
+    constraint = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_constraint").first;
+    constrained = mesh.add_property_map<Vertex_index, bool>("v:smdf_constrained", false).first;
+    magnitude = mesh.add_property_map<Vertex_index, double>("v:smdf_magnitude", 0.).first;
+    feature = mesh.add_property_map<Edge_index, bool>("e:smdf_feature", false).first;
+  }
+};
+
+Float_array rows_of_three(const py::object& value, std::size_t rows, const char* name)
+{
+  const Float_array a = option_as<Float_array>(value, name, "an array of numbers");
+  if(a.ndim() != 2 || a.shape(1) != 3 || static_cast<std::size_t>(a.shape(0)) != rows)
+    refuse(std::string(name) + " must be an array of shape (" + std::to_string(rows) + ", 3)");
+  const auto r = a.unchecked<2>();
+  for(py::ssize_t i = 0; i < a.shape(0); ++i)
+    for(int c = 0; c < 3; ++c)
+      if(!std::isfinite(r(i, c))) refuse(std::string(name) + " row " + std::to_string(i) + " is not finite");
+  return a;
+}
+
+Index_array index_rows(const py::object& value, py::ssize_t columns, const char* name)
+{
+  const Index_array a = option_as<Index_array>(value, name, "an array of integers");
+  if(a.ndim() != 2 || a.shape(1) != columns)
+    refuse(std::string(name) + " must be an array of shape (k, " + std::to_string(columns) + ")");
+  return a;
+}
+
+// constraints = (vertex ids, directions k x 3)
+void read_constraints(const py::object& value, const Mesh& mesh, Options& o)
+{
+  const py::tuple pair = option_as<py::tuple>(value, "constraints", "a pair (vertex ids, directions)");
+  if(pair.size() != 2) refuse("constraints must be a pair (vertex ids, directions of shape (k, 3))");
+  const Index_array ids = option_as<Index_array>(pair[0], "constraints' vertex ids", "an array of integers");
+  if(ids.ndim() != 1) refuse("constraints: the vertex ids must be a 1-dimensional array");
+  const Float_array d = rows_of_three(pair[1], static_cast<std::size_t>(ids.shape(0)), "constraints' directions");
+  const auto id = ids.unchecked<1>();
+  const auto dir = d.unchecked<2>();
+  for(py::ssize_t i = 0; i < ids.shape(0); ++i)
+  {
+    if(id(i) < 0 || static_cast<std::size_t>(id(i)) >= mesh.number_of_vertices())
+      refuse("constraints: vertex " + std::to_string(id(i)) + " is not a vertex of the mesh");
+    o.constraints.emplace_back(Vertex_index(static_cast<Mesh::size_type>(id(i))),
+                               Kernel::Vector_3(dir(i, 0), dir(i, 1), dir(i, 2)));
+  }
+}
+
+// feature_edges = E x 2 vertex pairs (each an edge of the mesh)
+void read_feature_edges(const py::object& value, const Mesh& mesh, Options& o)
+{
+  const Index_array e = index_rows(value, 2, "feature_edges");
+  const auto r = e.unchecked<2>();
+  for(py::ssize_t i = 0; i < e.shape(0); ++i)
+  {
+    const long long a = r(i, 0), b = r(i, 1), n = static_cast<long long>(mesh.number_of_vertices());
+    if(a < 0 || b < 0 || a >= n || b >= n) refuse("feature_edges row " + std::to_string(i) + ": no such vertex");
+    const auto h = CGAL::halfedge(Vertex_index(static_cast<Mesh::size_type>(a)),
+                                  Vertex_index(static_cast<Mesh::size_type>(b)), mesh);
+    if(!h.second) refuse("feature_edges row " + std::to_string(i) + " is not an edge of the mesh");
+    o.features.push_back(CGAL::edge(h.first, mesh));
+  }
+  o.has_features = true;
+}
+
+// prescribed = k x 2 (face, k): index k / n
+void read_prescribed(const py::object& value, const Mesh& mesh, Options& o)
+{
+  const Index_array p = index_rows(value, 2, "prescribed");
+  const auto r = p.unchecked<2>();
+  std::vector<std::pair<Face_index, int> > faces;
+  for(py::ssize_t i = 0; i < p.shape(0); ++i)
+  {
+    if(r(i, 0) < 0 || static_cast<std::size_t>(r(i, 0)) >= mesh.number_of_faces())
+      refuse("prescribed row " + std::to_string(i) + ": face " + std::to_string(r(i, 0)) + " is not a face of the mesh");
+    if(std::abs(r(i, 1)) > 1000000) refuse("prescribed row " + std::to_string(i) + ": k out of range");
+    faces.emplace_back(Face_index(static_cast<Mesh::size_type>(r(i, 0))), static_cast<int>(r(i, 1)));
+  }
+  o.prescribed = std::move(faces);
+}
+
+void read_enumerations(const py::dict& kw, Options& o)
+{
+  typedef SMDF::Principal_curvature_alignment A;
+  typedef SMDF::Principal_curvature_estimate E;
+  typedef SMDF::Boundary_alignment B;
+  if(kw.contains("align") && !kw["align"].is_none())
+    o.align = choose<A>(option_as<std::string>(kw["align"], "align", "a string"), "align",
+                        {{"none", A::NONE}, {"curvature", A::MAXIMUM}, {"max-curvature", A::MAXIMUM},
+                         {"min-curvature", A::MINIMUM}});
+  if(kw.contains("curvature_estimate"))
+    o.curvature_estimate = choose<E>(option_as<std::string>(kw["curvature_estimate"], "curvature_estimate", "a string"), "curvature_estimate",
+                                     {{"quadric-fit", E::QUADRIC_FIT}, {"hopf", E::HOPF_DIFFERENTIAL}});
+  if(kw.contains("boundary") && !kw["boundary"].is_none())
+    o.boundary = choose<B>(option_as<std::string>(kw["boundary"], "boundary", "a string"), "boundary",
+                           {{"none", B::NONE}, {"tangent", B::TANGENT}, {"normal", B::NORMAL}});
+}
+
+const char* const option_names[] = {"degree", "s", "align", "curvature_estimate", "boundary", "guidance",
+                                    "alignment_weight", "lambda_t", "eigenvalue_bound", "constraints",
+                                    "feature_edges", "feature_angle", "prescribed", "max_iterations", "tolerance",
+                                    "seed"};
+
+// The keyword arguments of compute() (an unknown one is a TypeError, as Python's own).
+Options read_options(const py::dict& kw, Mesh& mesh)
+{
+  for(const auto& item : kw)
+  {
+    const std::string key = py::cast<std::string>(item.first);
+    if(std::find(std::begin(option_names), std::end(option_names), key) == std::end(option_names))
+      throw py::type_error("unexpected keyword argument '" + key + "'");
+  }
+  Options o;
+  if(kw.contains("degree")) o.degree = option_as<int>(kw["degree"], "degree", "an integer");
+  if(kw.contains("s")) o.s = option_as<double>(kw["s"], "s", "a number");
+  read_enumerations(kw, o);
+  auto given = [&](const char* key) { return kw.contains(key) && !kw[key].is_none(); };
+  if(given("lambda_t")) o.lambda_t = option_as<double>(kw["lambda_t"], "lambda_t", "a number");
+  if(given("alignment_weight")) o.alignment_weight = option_as<double>(kw["alignment_weight"], "alignment_weight", "a number");
+  if(kw.contains("eigenvalue_bound")) o.eigenvalue_bound = option_as<bool>(kw["eigenvalue_bound"], "eigenvalue_bound", "True or False");
+  if(given("guidance"))
+  {
+    const Float_array g = rows_of_three(kw["guidance"], mesh.number_of_vertices(), "guidance");
+    const auto r = g.unchecked<2>();
+    for(py::ssize_t i = 0; i < g.shape(0); ++i) o.guidance.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  }
+  if(given("constraints")) read_constraints(kw["constraints"], mesh, o);
+  if(given("feature_edges")) read_feature_edges(kw["feature_edges"], mesh, o);
+  if(given("feature_angle"))
+  {
+    const double angle = option_as<double>(kw["feature_angle"], "feature_angle", "a number");
+    if(!(angle > 0. && angle < 180.)) refuse("feature_angle must lie in (0, 180) degrees");
+    o.feature_angle = angle;
+  }
+  if(given("prescribed")) read_prescribed(kw["prescribed"], mesh, o);
+  if(kw.contains("max_iterations")) o.max_iterations = option_as<std::size_t>(kw["max_iterations"], "max_iterations", "a positive integer");
+  if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
+  if(kw.contains("seed")) o.seed = option_as<unsigned int>(kw["seed"], "seed", "a non-negative integer");
+  return o;
+}
+
+// The maps take the options' values (the mesh's own maps, reset at every call).
+void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
+{
+  for(Vertex_index v : mesh.vertices())
+  {
+    put(maps.constrained, v, false);
+    if(!o.guidance.empty()) put(maps.guidance, v, o.guidance[static_cast<std::size_t>(v)]);
+  }
+  for(const auto& c : o.constraints)
+  {
+    put(maps.constrained, c.first, true);
+    put(maps.constraint, c.first, c.second);
+  }
+  for(Edge_index e : mesh.edges()) put(maps.feature, e, false);
+  for(Edge_index e : o.features) put(maps.feature, e, true);
+  if(o.feature_angle) CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.feature_angle, maps.feature);
+}
+
+// The chain of optional named parameters, one step per option.
+template <typename NP>
+SMDF::Direction_field_result with_prescribed(Field& field, const Options& o, const Maps& maps, const NP& np)
+{
+  if(o.prescribed) return field.compute(maps.direction, np.prescribed_singularities(*o.prescribed));
+  return field.compute(maps.direction, np);
+}
+
+template <typename NP>
+SMDF::Direction_field_result with_features(Field& field, const Options& o, const Maps& maps, const NP& np)
+{
+  if(o.has_features || o.feature_angle) return with_prescribed(field, o, maps, np.edge_is_feature_map(maps.feature));
+  return with_prescribed(field, o, maps, np);
+}
+
+template <typename NP>
+SMDF::Direction_field_result with_constraints(Field& field, const Options& o, const Maps& maps, const NP& np)
+{
+  if(!o.constraints.empty())
+    return with_features(field, o, maps,
+                         np.vertex_is_constrained_map(maps.constrained).vertex_constrained_direction_map(maps.constraint));
+  return with_features(field, o, maps, np);
+}
+
+template <typename NP>
+SMDF::Direction_field_result with_alignment(Field& field, const Options& o, const Maps& maps, const NP& np)
+{
+  if(o.prescribed)  // refused with a prescription: not instantiated there
+  {
+    if(o.lambda_t || o.alignment_weight || o.eigenvalue_bound)
+      refuse("prescribed singularities take no lambda_t, alignment_weight or eigenvalue_bound");
+    return with_constraints(field, o, maps, np);
+  }
+  if(o.lambda_t && o.alignment_weight) refuse("give either lambda_t or alignment_weight, not both");
+  if(o.lambda_t) return with_constraints(field, o, maps, np.alignment_lambda(*o.lambda_t));
+  if(o.alignment_weight) return with_constraints(field, o, maps, np.alignment_weight(*o.alignment_weight));
+  return with_constraints(field, o, maps, np);
+}
+
+template <typename Out>
+SMDF::Direction_field_result compute_field(Field& field, const Options& o, const Maps& maps, Out singularities)
+{
+  const auto np = CGAL::parameters::degree(o.degree)
+                    .smoothness_parameter(o.s)
+                    .principal_curvature_alignment(o.align)
+                    .principal_curvature_estimate(o.curvature_estimate)
+                    .boundary_alignment(o.boundary)
+                    .compute_eigenvalue_bound(o.eigenvalue_bound)
+                    .number_of_iterations(o.max_iterations)
+                    .residual_tolerance(o.tolerance)
+                    .random_seed(o.seed)
+                    .vertex_magnitude_map(maps.magnitude)
+                    .singularities_output_iterator(singularities);
+  if(!o.guidance.empty()) return with_alignment(field, o, maps, np.vertex_guidance_map(maps.guidance));
+  return with_alignment(field, o, maps, np);
+}
+
+}  // namespace
+
+#endif

@@ -1,0 +1,197 @@
+// The module's classes: Result (numpy arrays and the report of one field),
+// DirectionField (the C++ class: the mesh work and factorizations kept for
+// repeated calls), compute_globally_optimal_directions() and read_mesh().
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_RESULTS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_RESULTS_H
+
+namespace {
+
+struct Result
+{
+  py::array_t<double> directions, magnitudes;
+  py::array_t<long long> singular_faces;
+  std::vector<double> eigenvalues;
+  SMDF::Direction_field_result report;
+};
+
+// The arrays of one computed field, taken from the mesh's maps (with the GIL held).
+Result make_result(const Mesh& mesh, const Maps& maps, const std::vector<std::pair<Face_index, int> >& singular,
+                   SMDF::Direction_field_result report)
+{
+  Result r;
+  const py::ssize_t nv = static_cast<py::ssize_t>(mesh.number_of_vertices());
+  r.directions = py::array_t<double>({nv, py::ssize_t(3)});
+  r.magnitudes = py::array_t<double>(nv);
+  auto d = r.directions.mutable_unchecked<2>();
+  auto m = r.magnitudes.mutable_unchecked<1>();
+  for(Vertex_index v : mesh.vertices())
+  {
+    const py::ssize_t i = static_cast<py::ssize_t>(v);
+    const Kernel::Vector_3 x = get(maps.direction, v);
+    d(i, 0) = x.x(), d(i, 1) = x.y(), d(i, 2) = x.z();
+    m(i) = get(maps.magnitude, v);
+  }
+  r.singular_faces = py::array_t<long long>({static_cast<py::ssize_t>(singular.size()), py::ssize_t(2)});
+  auto s = r.singular_faces.mutable_unchecked<2>();
+  for(std::size_t i = 0; i < singular.size(); ++i)
+  {
+    s(static_cast<py::ssize_t>(i), 0) = static_cast<long long>(singular[i].first);
+    s(static_cast<py::ssize_t>(i), 1) = singular[i].second;
+  }
+  for(const auto& c : report.components) r.eigenvalues.push_back(c.eigenvalue);
+  r.report = std::move(report);
+  return r;
+}
+
+// The module's object: its own copy of the mesh (with the maps of the
+// options) and the C++ class over it.
+class Direction_field_object
+{
+public:
+  Direction_field_object(const py::object& V, const py::object& F)
+    : m_mesh(make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
+                       option_as<Index_array>(F, "F", "an array of integers of shape (number of faces, 3)"))),
+      m_maps(m_mesh)
+  {
+    py::gil_scoped_release release;
+    m_field = std::make_unique<Field>(m_mesh);
+  }
+
+  // `as_free_function`: the timings count the construction too, as the C++ free function's do
+  Result compute(const py::kwargs& kwargs, bool as_free_function = false)
+  {
+    const Options o = read_options(kwargs, m_mesh);
+    std::vector<std::pair<Face_index, int> > singular;
+    SMDF::Direction_field_result report;
+    {
+      // the computation runs without the GIL: other Python threads go on (one object, one call at a time)
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(m_busy);
+      fill_maps(o, m_mesh, m_maps);
+      report = compute_field(*m_field, o, m_maps, std::back_inserter(singular));
+      if(as_free_function)
+      {
+        report.timings.setup_ms += m_field->construction_ms();
+        report.timings.total_ms += m_field->construction_ms();
+      }
+    }
+    return make_result(m_mesh, m_maps, singular, std::move(report));
+  }
+
+private:
+  Mesh m_mesh;
+  Maps m_maps;
+  std::unique_ptr<Field> m_field;
+  std::mutex m_busy;
+};
+
+py::dict timings_of(const SMDF::Direction_field_result& r)
+{
+  py::dict t;
+  t["setup_ms"] = r.timings.setup_ms;
+  t["factorization_ms"] = r.timings.factorization_ms;
+  t["solve_ms"] = r.timings.solve_ms;
+  t["total_ms"] = r.timings.total_ms;
+  return t;
+}
+
+void bind_result(py::module_& m)
+{
+  py::class_<Result>(m, "Result", "One computed field: numpy arrays and the solver's report.")
+    .def_readonly("directions", &Result::directions, "unit tangent direction per vertex, shape (|V|, 3)")
+    .def_readonly("magnitudes", &Result::magnitudes, "|u| per vertex before normalization, shape (|V|,)")
+    .def_readonly("singular_faces", &Result::singular_faces,
+                  "shape (k, 2): face, k for each singular face (index k / n)")
+    .def_readonly("eigenvalues", &Result::eigenvalues, "the smallest eigenvalue per component (nan if not computed)")
+    .def_property_readonly("degree", [](const Result& r) { return r.report.degree; })
+    .def_property_readonly("iterations", [](const Result& r) { return r.report.iterations; })
+    .def_property_readonly("residual", [](const Result& r) { return r.report.residual; })
+    .def_property_readonly("converged", [](const Result& r) { return r.report.converged; })
+    .def_property_readonly("index_sum", [](const Result& r) { return r.report.index_sum; },
+                           "sum of k over the singular faces (n times the Euler characteristic on closed meshes)")
+    .def_property_readonly("component_index_sums", [](const Result& r) {
+      std::vector<int> sums;
+      for(const auto& c : r.report.components) sums.push_back(c.index_sum);
+      return sums;
+    })
+    .def_property_readonly("component_euler_characteristics", [](const Result& r) {
+      std::vector<int> chi;
+      for(const auto& c : r.report.components) chi.push_back(c.euler_characteristic);
+      return chi;
+    })
+    .def_property_readonly("timings", [](const Result& r) { return timings_of(r.report); }, "milliseconds");
+}
+
+const char* const compute_doc =
+  "Computes the globally optimal n-direction field of the mesh.\n\n"
+  "Keyword arguments (the named parameters of the C++ function):\n"
+  "  degree=4            n: 1 vector, 2 line, 4 cross field ...\n"
+  "  s=0.0               smoothness parameter in [-1, 1] (-1 intrinsic, +1 extrinsic)\n"
+  "  align=None          'curvature' (= 'max-curvature'), 'min-curvature' or None (even n)\n"
+  "  curvature_estimate  'quadric-fit' (default) or 'hopf'\n"
+  "  guidance=None       (|V|, 3) vectors to follow (length = weight)\n"
+  "  lambda_t / alignment_weight   how strongly an aligned field follows its guidance\n"
+  "  eigenvalue_bound=False        also compute lambda_1 for aligned fields\n"
+  "  constraints=None    (vertex ids, (k, 3) directions): hard constraints\n"
+  "  boundary=None       'tangent' or 'normal': one direction along the boundary\n"
+  "  feature_edges=None  (E, 2) vertex pairs, or feature_angle=DEG: sharp edges to follow (even n)\n"
+  "  prescribed=None     (k, 2) face, k: place the singularities (index k / n)\n"
+  "  max_iterations=1000, tolerance=1e-10, seed=0   the eigen-solve\n"
+  "Raises ValueError (InvalidInputError) for bad input, RuntimeError (SolverFailureError) if a solve fails.";
+
+py::tuple read_mesh(const std::string& path)
+{
+  Repaired_mesh<Mesh> in;
+  {
+    py::gil_scoped_release release;
+    try { in = read_and_repair_mesh<Mesh>(path); }
+    catch(const Mesh_input_error& e) { throw py::value_error(e.what()); }
+  }
+  py::array_t<double> V({static_cast<py::ssize_t>(in.mesh.number_of_vertices()), py::ssize_t(3)});
+  py::array_t<long long> F({static_cast<py::ssize_t>(in.mesh.number_of_faces()), py::ssize_t(3)});
+  auto v = V.mutable_unchecked<2>();
+  auto f = F.mutable_unchecked<2>();
+  for(Vertex_index x : in.mesh.vertices())
+    for(int c = 0; c < 3; ++c) v(static_cast<py::ssize_t>(x), c) = in.mesh.point(x)[c];
+  for(Face_index x : in.mesh.faces())
+  {
+    int c = 0;
+    for(Vertex_index y : CGAL::vertices_around_face(in.mesh.halfedge(x), in.mesh))
+      f(static_cast<py::ssize_t>(x), c++) = static_cast<long long>(y);
+  }
+  const Repair_report& r = in.report;
+  py::dict repairs;
+  repairs["merged_points"] = r.merged_points;
+  repairs["degenerate_faces_removed"] = r.degenerate_polygons;
+  repairs["polygons_triangulated"] = r.triangulated_polygons;
+  repairs["repeated_faces_removed"] = r.repeated_triangles;
+  repairs["faces_reoriented"] = r.reoriented_triangles;
+  repairs["vertices_duplicated"] = r.duplicated_vertices;
+  repairs["faces_skipped"] = r.skipped_triangles;
+  repairs["unused_vertices_removed"] = r.unused_vertices;
+  return py::make_tuple(V, F, repairs);
+}
+
+void bind_field(py::module_& m)
+{
+  py::class_<Direction_field_object>(m, "DirectionField",
+                                     "A mesh prepared once (indexing, geometry, components); compute() then reuses "
+                                     "the connection, matrices and factorizations of earlier calls, as the C++ class "
+                                     "Globally_optimal_direction_field does.")
+    .def(py::init<const py::object&, const py::object&>(), py::arg("V"), py::arg("F"),
+         "V: (|V|, 3) float64 vertex positions; F: (|F|, 3) integer triangles (an oriented manifold mesh)")
+    .def("compute", [](Direction_field_object& f, const py::kwargs& kw) { return f.compute(kw); }, compute_doc);
+  m.def("compute_globally_optimal_directions",
+        [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {
+          Direction_field_object field(V, F);
+          return field.compute(kwargs, true);
+        },
+        py::arg("V"), py::arg("F"), compute_doc);
+  m.def("read_mesh", &read_mesh, py::arg("path"),
+        "Reads an OFF, OBJ, PLY or STL file with the command-line program's readers and repair; returns\n"
+        "(V, F, repairs): float64 (|V|, 3), int64 (|F|, 3), and a dict of what the repair changed.");
+}
+
+}  // namespace
+
+#endif

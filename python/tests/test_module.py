@@ -1,0 +1,237 @@
+"""The Python module against the C++ program, the math's invariants and bad input."""
+import json
+import math
+import os
+import subprocess
+import sys
+import threading
+
+import numpy as np
+import pytest
+
+import surface_mesh_direction_fields as smdf
+
+
+def octahedron():
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float64)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    return V, F
+
+
+def sphere(levels=3):
+    V, F = octahedron()
+    points, faces = [tuple(p) for p in V], [tuple(f) for f in F]
+    for _ in range(levels):
+        middle, new = {}, []
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                p = np.add(points[a], points[b]) / 2
+                points.append(tuple(p / np.linalg.norm(p)))
+                middle[key] = len(points) - 1
+            return middle[key]
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            new += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+        faces = new
+    return np.array(points), np.array(faces, dtype=np.int64)
+
+
+def torus(n=24, m=12, R=1.0, r=0.4):
+    V = np.array([[(R + r * math.cos(2 * math.pi * j / m)) * math.cos(2 * math.pi * i / n),
+                   (R + r * math.cos(2 * math.pi * j / m)) * math.sin(2 * math.pi * i / n),
+                   r * math.sin(2 * math.pi * j / m)] for i in range(n) for j in range(m)])
+    F = []
+    for i in range(n):
+        for j in range(m):
+            a, b, c, d = i * m + j, ((i + 1) % n) * m + j, ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+            F += [(a, b, c), (a, c, d)]
+    return V, np.array(F)
+
+
+@pytest.fixture
+def program(request):
+    path = request.config.getoption("--direction-field")
+    if not path:
+        pytest.skip("no direction_field given")
+    return path
+
+
+@pytest.fixture
+def shared(request):
+    folder = request.config.getoption("--shared")
+    if not folder or not os.path.isdir(folder):
+        pytest.skip("no shared meshes")
+    return folder
+
+
+def test_version_and_docs():
+    assert isinstance(smdf.__version__, str) and smdf.__version__.count(".") == 2
+    assert "degree" in smdf.compute_globally_optimal_directions.__doc__
+    assert smdf.DirectionField.compute.__doc__ and smdf.read_mesh.__doc__
+
+
+@pytest.mark.parametrize("degree", [1, 2, 3, 4, 6])
+def test_index_sum_is_n_chi(degree):
+    for (V, F), chi in [(sphere(), 2), (torus(), 0)]:
+        r = smdf.compute_globally_optimal_directions(V, F, degree=degree)
+        assert r.index_sum == degree * chi and r.singular_faces[:, 1].sum() == degree * chi
+        assert r.directions.shape == V.shape and np.allclose(np.linalg.norm(r.directions, axis=1), 1)
+        assert r.converged and r.degree == degree and len(r.eigenvalues) == 1
+
+
+def run_program(program, mesh, out, *options):
+    d = os.path.join(out, "d.txt")
+    s = os.path.join(out, "s.txt")
+    p = subprocess.run([program, mesh, "--directions", d, "--singularities", s, "--json"] + list(options),
+                       capture_output=True, text=True, check=True)
+    singular = np.array([[int(x) for x in l.split()] for l in open(s) if l.strip() and not l.startswith("#")])
+    return np.loadtxt(d), singular.reshape(-1, 2), json.loads(p.stdout)
+
+
+@pytest.mark.parametrize("options,python", [
+    ([], {}),
+    (["--degree", "2", "--s", "0.5"], {"degree": 2, "s": 0.5}),
+    (["--align", "curvature", "--alignment-weight", "0.5"], {"align": "curvature", "alignment_weight": 0.5}),
+    (["--feature-angle", "60"], {"feature_angle": 60.0}),
+])
+def test_same_field_as_the_program(program, shared, tmp_path, options, python):
+    mesh = os.path.join(shared, "fandisk.off")
+    V, F, repairs = smdf.read_mesh(mesh)
+    assert sum(repairs.values()) == 0
+    directions, singular, report = run_program(program, mesh, str(tmp_path), *options)
+    r = smdf.compute_globally_optimal_directions(V, F, **python)
+    assert np.array_equal(r.directions, directions)  # bit for bit (17 digits written)
+    assert np.array_equal(r.singular_faces, singular) and r.index_sum == report["index_sum"]
+
+
+def test_options_change_the_field():
+    V, F = sphere()
+    base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions
+    guidance = np.tile([0.0, 0.0, 1.0], (len(V), 1))
+    for options in [dict(align="curvature", lambda_t=-10.0), dict(guidance=guidance, lambda_t=-10.0),
+                    dict(constraints=(np.array([0]), np.array([[0.0, 1.0, 0.0]]))), dict(s=1.0)]:
+        r = smdf.compute_globally_optimal_directions(V, F, degree=4, **options)
+        assert not np.allclose(r.directions, base), options
+    r = smdf.compute_globally_optimal_directions(V, F, degree=1, constraints=(np.array([0]), np.array([[0.0, 1.0, 0.0]])))
+    assert np.allclose(r.directions[0], [0, 1, 0])
+
+
+def test_prescribed_singularities():
+    V, F = sphere()
+    first = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4, prescribed=first.singular_faces)
+    assert np.array_equal(r.singular_faces, first.singular_faces)
+    with pytest.raises(ValueError):
+        smdf.compute_globally_optimal_directions(V, F, degree=4, prescribed=np.array([[0, 1]]))
+
+
+def test_class_reuses_and_matches_fresh_calls():
+    V, F = sphere()
+    field = smdf.DirectionField(V, F)
+    a = field.compute(degree=4)
+    b = field.compute(degree=2, s=0.3)
+    c = field.compute(degree=4)
+    assert np.array_equal(a.directions, c.directions)
+    assert np.array_equal(b.directions, smdf.compute_globally_optimal_directions(V, F, degree=2, s=0.3).directions)
+
+
+def test_two_threads_give_the_same_results():
+    meshes = [sphere(4), torus(60, 30)]
+    alone = [smdf.compute_globally_optimal_directions(V, F, degree=4).directions for V, F in meshes]
+    together = [None, None]
+    def work(i):
+        together[i] = smdf.compute_globally_optimal_directions(*meshes[i], degree=4).directions
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(np.array_equal(a, b) for a, b in zip(alone, together))
+
+
+V0, F0 = octahedron()
+BAD = [
+    (np.zeros((0, 3)), F0, ValueError), (V0, np.zeros((0, 3), dtype=np.int64), ValueError),
+    (V0[:, :2], F0, ValueError), (V0, F0[:, :2], ValueError), (V0.ravel(), F0, ValueError),
+    (np.where(np.arange(18).reshape(6, 3) == 4, np.nan, V0), F0, ValueError),
+    (np.where(np.arange(18).reshape(6, 3) == 4, np.inf, V0), F0, ValueError),
+    (V0, np.where(F0 == 5, -1, F0), ValueError), (V0, np.where(F0 == 5, 6, F0), ValueError),
+    (V0, np.vstack([F0, F0[:1]]), ValueError),                  # a repeated face
+    (V0, np.vstack([F0, [[0, 2, 1]]]), ValueError),             # an edge of three faces
+    (V0, F0[:, ::-1][[0, 1, 2, 3, 4, 5, 6]].tolist() + [F0[7].tolist()], ValueError),  # inconsistent orientation
+    (V0, np.array([[0, 0, 1]] + F0[1:].tolist()), ValueError),   # a degenerate face
+    ("not an array", F0, (TypeError, ValueError)), (V0, [["a", "b", "c"]], (TypeError, ValueError)),
+    (V0.astype(np.float32), F0, None), (V0, F0.astype(np.int32), None),      # converted once, accepted
+]
+
+
+@pytest.mark.parametrize("V,F,error", BAD)
+def test_bad_meshes(V, F, error):
+    if error is None:
+        assert smdf.compute_globally_optimal_directions(V, F).index_sum == 8
+        return
+    with pytest.raises(error) as e:
+        smdf.compute_globally_optimal_directions(V, F)
+    assert "\n" not in str(e.value) and str(e.value)
+
+
+@pytest.mark.parametrize("options,error", [
+    (dict(degree=0), ValueError), (dict(degree=-3), ValueError), (dict(s=2.0), ValueError),
+    (dict(s=float("nan")), ValueError), (dict(align="sideways"), ValueError), (dict(align="curvature", degree=3), ValueError),
+    (dict(boundary="up"), ValueError), (dict(curvature_estimate="guess"), ValueError),
+    (dict(lambda_t=-1.0, alignment_weight=0.5), ValueError), (dict(alignment_weight=1.5, align="curvature"), ValueError),
+    (dict(guidance=np.zeros((5, 3))), ValueError), (dict(guidance=np.full((6, 3), np.nan)), ValueError),
+    (dict(constraints=(np.array([9]), np.array([[1.0, 0, 0]]))), ValueError),
+    (dict(constraints=(np.array([0, 1]), np.array([[1.0, 0, 0]]))), ValueError),
+    (dict(feature_edges=np.array([[0, 1]])), ValueError), (dict(feature_angle=200.0), ValueError),
+    (dict(prescribed=np.array([[99, 1]])), ValueError), (dict(max_iterations=-1), TypeError),
+    (dict(frobnicate=1), TypeError), (dict(degree="four"), TypeError),
+])
+def test_bad_options(options, error):
+    with pytest.raises(error) as e:
+        smdf.compute_globally_optimal_directions(V0, F0, **options)
+    assert "\n" not in str(e.value)
+
+
+def test_read_mesh_repairs_and_refuses(tmp_path):
+    quads = tmp_path / "cube.off"
+    quads.write_text("OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                     "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
+    V, F, repairs = smdf.read_mesh(str(quads))
+    assert V.shape == (8, 3) and F.shape == (12, 3) and repairs["polygons_triangulated"] == 6
+    assert smdf.compute_globally_optimal_directions(V, F).index_sum == 8
+    for text in ["", "OFF\n3 1 0\n0 0 0\n1 0 0\n"]:
+        bad = tmp_path / "bad.off"
+        bad.write_text(text)
+        with pytest.raises(ValueError):
+            smdf.read_mesh(str(bad))
+    with pytest.raises(ValueError):
+        smdf.read_mesh(str(tmp_path / "missing.off"))
+
+
+def test_random_arrays_never_crash():
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        nv, nf = rng.integers(0, 8, size=2)
+        V = rng.normal(size=(nv, 3)) * 10.0 ** rng.integers(-5, 5)
+        F = rng.integers(-1, max(nv, 1) + 1, size=(nf, 3))
+        try:
+            r = smdf.compute_globally_optimal_directions(V, F, degree=int(rng.integers(1, 5)))
+            assert np.all(np.isfinite(r.directions))
+        except (ValueError, RuntimeError):
+            pass
+
+
+def test_meshio_example(tmp_path):
+    meshio = pytest.importorskip("meshio")
+    V, F = sphere()
+    mesh = tmp_path / "sphere.off"
+    meshio.write(str(mesh), meshio.Mesh(V, [("triangle", F)]))
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "Surface_mesh_direction_fields", "python",
+                          "cross_field_meshio.py")
+    out = tmp_path / "field.vtu"
+    subprocess.run([sys.executable, script, str(mesh), str(out)], check=True, capture_output=True)
+    m = meshio.read(str(out))
+    assert m.point_data["direction_0"].shape == V.shape
+    assert abs(m.cell_data["singularity_index"][0].sum() - 2) < 1e-12  # chi = 2
