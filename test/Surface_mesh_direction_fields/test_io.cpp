@@ -388,6 +388,31 @@ static void check_streamline_separation(Test_report& report, const std::string& 
                  " separations apart");
 }
 
+// A PolyData file as the writer of earlier versions wrote it (the octahedron,
+// n = 1, one singularity point at the barycentre of face 0): still read, the
+// singular face found from the point.
+static void check_old_polydata_file(Test_report& report)
+{
+  std::string text = "# vtk DataFile Version 3.0\ndirection field of degree 1 (CGAL Surface_mesh_direction_fields)\n"
+                     "ASCII\nDATASET POLYDATA\nFIELD FieldData 1\ndegree 1 1 int\n1\nPOINTS 7 double\n"
+                     "1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n0.33333333333333331 0.33333333333333331 "
+                     "0.33333333333333331\nVERTICES 1 2\n1 6\nPOLYGONS 8 32\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n"
+                     "3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\nPOINT_DATA 7\nSCALARS singularity_index double 1\n"
+                     "LOOKUP_TABLE default\n0\n0\n0\n0\n0\n0\n1\nNORMALS normals double\n";
+  for(int i = 0; i < 7; ++i) text += "1 0 0\n";
+  text += "VECTORS direction_0 double\n0 1 0\n0 1 0\n1 0 0\n1 0 0\n1 0 0\n1 0 0\n0 0 0\n"
+          "CELL_DATA 9\nSCALARS singularity_index double 1\nLOOKUP_TABLE default\n1\n0\n0\n0\n0\n0\n0\n0\n0\n";
+  std::istringstream is(text);
+  std::string error;
+  SIO::Direction_field_data back;
+  try { back = SIO::read_VTK(is); }
+  catch(const std::exception& e) { error = e.what(); }
+  const std::vector<std::pair<std::size_t, int> > expected{{0, 1}};
+  report.check(error.empty() && back.degree == 1 && back.points.size() == 6 && back.faces.size() == 8 &&
+                 back.singularities == expected && back.directions[2][0] == SIO::Direction_field_data::Vector{1., 0., 0.},
+               "a PolyData file of earlier versions is read (" + error + ")");
+}
+
 int main()
 {
   Test_report report("io");
@@ -494,5 +519,6 @@ int main()
     check_streamlines(report, "disk", disk, 4, true, false);
     check_streamlines(report, "disk", disk, 3, true, false);
   }
+  check_old_polydata_file(report);
   return report.finish();
 }
