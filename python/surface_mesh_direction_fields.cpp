@@ -119,6 +119,7 @@ Enum choose(const std::string& value, const char* option, std::initializer_list<
 
 #include "python_options.h"
 #include "python_results.h"
+#include "python_files.h"
 
 PYBIND11_MODULE(surface_mesh_direction_fields, m)
 {
@@ -129,4 +130,5 @@ PYBIND11_MODULE(surface_mesh_direction_fields, m)
   py::register_exception<SMDF::Solver_failure_error>(m, "SolverFailureError", PyExc_RuntimeError);
   bind_result(m);
   bind_field(m);
+  bind_files(m);
 }

@@ -235,3 +235,31 @@ def test_meshio_example(tmp_path):
     m = meshio.read(str(out))
     assert m.point_data["direction_0"].shape == V.shape
     assert abs(m.cell_data["singularity_index"][0].sum() - 2) < 1e-12  # chi = 2
+
+
+@pytest.mark.parametrize("writer,option,name", [
+    ("write_vtk", "--vtk", "f.vtu"), ("write_vtk", "--vtk", "f.vtk"),
+    ("write_vtk_singularities", "--vtk-singularities", "s.vtu"), ("write_ply", "--ply", "f.ply"),
+    ("write_rosy", "--rosy", "f.rosy"), ("write_ffield", "--ffield", "f.ffield"),
+    ("write_singularity_list", "--singularity-list", "f.txt")])
+def test_writers_write_the_programs_files(program, shared, tmp_path, writer, option, name):
+    mesh = os.path.join(shared, "spot.off")
+    V, F, _ = smdf.read_mesh(mesh)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    ours, theirs = tmp_path / ("py_" + name), tmp_path / ("cli_" + name)
+    getattr(smdf, writer)(str(ours), V, F, r)
+    subprocess.run([program, mesh, option, str(theirs), "--quiet"], check=True, capture_output=True)
+    assert ours.read_bytes() == theirs.read_bytes()
+    assert sorted(os.listdir(tmp_path)) == sorted(["py_" + name, "cli_" + name])
+
+
+def test_writers_refuse(tmp_path):
+    V, F = sphere(1)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=2)
+    with pytest.raises(OSError):
+        smdf.write_vtk(str(tmp_path / "no_folder" / "f.vtu"), V, F, r)
+    with pytest.raises(ValueError):
+        smdf.write_rosy(str(tmp_path / "f.rosy"), V, F, r)          # rosy holds crosses (n = 4) only
+    with pytest.raises(ValueError):
+        smdf.write_vtk(str(tmp_path / "f.vtu"), *octahedron(), r)  # computed on another mesh
+    assert os.listdir(tmp_path) == []

@@ -1,0 +1,131 @@
+// The exchange writers for Python: write_vtk(), write_vtk_singularities(),
+// write_ply(), write_rosy(), write_ffield(), write_singularity_list(), each
+// (path, V, F, result) as the command-line program writes them (the library's
+// IO::write_*() on make_direction_field_data()). A file is written under a
+// temporary name and renamed when complete: a failure leaves no partial file.
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FILES_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FILES_H
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+
+namespace {
+
+// An output that cannot be written (OSError in Python: thrown without the GIL,
+// translated once it is held again).
+struct File_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+[[noreturn]] void refuse_file(const std::string& message) { throw File_error(message); }
+
+// The field of `result` on the mesh of V and F, as the files need it.
+SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, const Result& result)
+{
+  Mesh mesh = make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
+                        option_as<Index_array>(F, "F", "an array of integers of shape (number of faces, 3)"));
+  const auto d = result.directions.unchecked<2>();
+  const auto m = result.magnitudes.unchecked<1>();
+  const auto s = result.singular_faces.unchecked<2>();
+  if(static_cast<std::size_t>(d.shape(0)) != mesh.number_of_vertices())
+    refuse("the result was computed on another mesh (" + std::to_string(d.shape(0)) + " directions for " +
+           std::to_string(mesh.number_of_vertices()) + " vertices)");
+  std::vector<Kernel::Vector_3> directions;
+  std::vector<double> magnitudes;
+  for(py::ssize_t i = 0; i < d.shape(0); ++i)
+  {
+    directions.emplace_back(d(i, 0), d(i, 1), d(i, 2));
+    magnitudes.push_back(m(i));
+  }
+  std::vector<std::pair<Face_index, int> > singular;
+  for(py::ssize_t i = 0; i < s.shape(0); ++i)
+  {
+    if(s(i, 0) < 0 || static_cast<std::size_t>(s(i, 0)) >= mesh.number_of_faces())
+      refuse("the result's singular faces are not faces of this mesh");
+    singular.emplace_back(Face_index(static_cast<Mesh::size_type>(s(i, 0))), static_cast<int>(s(i, 1)));
+  }
+  return SMDF::make_direction_field_data(mesh, CGAL::make_property_map(directions), result.report, singular,
+                                         CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(magnitudes)));
+}
+
+// Writes through `write` into path's temporary sibling, then renames it.
+void write_file(const std::string& path, const std::function<void(std::ostream&)>& write)
+{
+  if(path.empty()) refuse_file("the file name is empty");
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    if(!out) refuse_file("cannot write '" + path + "'");
+    try { write(out); }
+    catch(...)  // refused by the writer: no file left
+    {
+      out.close();
+      std::remove(partial.c_str());
+      throw;
+    }
+    out.flush();
+    if(!out)
+    {
+      out.close();
+      std::remove(partial.c_str());
+      refuse_file("writing '" + path + "' failed (disk full?)");
+    }
+  }
+  if(std::rename(partial.c_str(), path.c_str()) != 0)
+  {
+    std::remove(partial.c_str());
+    refuse_file("cannot write '" + path + "'");
+  }
+}
+
+bool ends_with(const std::string& s, const std::string& tail)
+{
+  return s.size() >= tail.size() && std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
+                                               [](char a, char b) { return std::tolower(a) == b; });
+}
+
+// vcglib (QuadWild) reads crosses only: as the program, other degrees are refused.
+void crosses_only(const SMDF::Direction_field_data& d, const char* format)
+{
+  if(d.degree != 4)
+    throw SMDF::Invalid_input_error(std::string(format) + " files hold cross fields (degree 4), not degree " +
+                                    std::to_string(d.degree));
+}
+
+void bind_files(py::module_& m)
+{
+  py::register_exception<File_error>(m, "FileError", PyExc_OSError);
+  typedef std::function<void(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
+  const std::pair<const char*, Writer> writers[] = {
+    {"write_vtk", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
+       if(ends_with(path, ".vtu")) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d); }},
+    {"write_vtk_singularities", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
+       if(ends_with(path, ".vtu")) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d); }},
+    {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) { SMDF::IO::write_PLY(os, d); }},
+    {"write_rosy", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+       crosses_only(d, "rosy");
+       SMDF::IO::write_rosy(os, d); }},
+    {"write_ffield", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+       crosses_only(d, "ffield");
+       SMDF::IO::write_ffield(os, d); }},
+    {"write_singularity_list", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+       SMDF::IO::write_singularities(os, d); }}};
+  for(const auto& w : writers)
+  {
+    const Writer writer = w.second;
+    m.def(w.first, [writer](const std::string& path, const py::object& V, const py::object& F, const Result& result) {
+            const SMDF::Direction_field_data data = field_data(V, F, result);
+            py::gil_scoped_release release;
+            write_file(path, [&](std::ostream& os) { writer(os, data, path); });
+          },
+          py::arg("path"), py::arg("V"), py::arg("F"), py::arg("result"),
+          "Writes the field of `result` (computed on V, F) as the command-line program's option of the same "
+          "name does (write_vtk: .vtk or .vtu by the name). Raises OSError if the file cannot be written.");
+  }
+}
+
+}  // namespace
+
+#endif
