@@ -78,6 +78,8 @@ public:
     return make_result(m_mesh, m_maps, singular, std::move(report));
   }
 
+  double construction_ms() const { return m_field->construction_ms(); }
+
 private:
   Mesh m_mesh;
   Maps m_maps;
@@ -180,7 +182,9 @@ void bind_field(py::module_& m)
                                      "Globally_optimal_direction_field does.")
     .def(py::init<const py::object&, const py::object&>(), py::arg("V"), py::arg("F"),
          "V: (|V|, 3) float64 vertex positions; F: (|F|, 3) integer triangles (an oriented manifold mesh)")
-    .def("compute", [](Direction_field_object& f, const py::kwargs& kw) { return f.compute(kw); }, compute_doc);
+    .def("compute", [](Direction_field_object& f, const py::kwargs& kw) { return f.compute(kw); }, compute_doc)
+    .def_property_readonly("construction_ms", &Direction_field_object::construction_ms,
+                           "milliseconds of the C++ class's mesh work (indexing, geometry, components)");
   m.def("compute_globally_optimal_directions",
         [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {
           Direction_field_object field(V, F);

@@ -68,7 +68,7 @@ Mesh make_mesh(const Float_array& V, const Index_array& F)
     if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) refuse("F row " + std::to_string(i) + " repeats a vertex");
   }
   Mesh mesh;
-  if(!rr::directed_edges_are_unique(points.size(), triangles) || !rr::build_oriented_manifold(points, triangles, mesh))
+  if(!rr::build_oriented_manifold(points, triangles, mesh))
     refuse("the faces do not form an oriented manifold mesh (a repeated face, an edge of more than two faces, "
            "a pinched vertex or inconsistent orientation); read_mesh() repairs mesh files");
   return mesh;

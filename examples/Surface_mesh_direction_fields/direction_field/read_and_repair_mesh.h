@@ -322,20 +322,6 @@ inline void remove_repeated_triangles(std::size_t points, std::vector<Triangle>&
   polygon_of_triangle.resize(kept);
 }
 
-// No directed edge twice: the triangles are consistently oriented and every
-// edge has at most two of them (a necessary condition for the mesh to be
-// built as it is; the fans of the vertices are checked on the mesh).
-inline bool directed_edges_are_unique(std::size_t points, const std::vector<Triangle>& triangles)
-{
-  Vertex_buckets<std::size_t> targets(points, [&](const auto& add) {
-    for(const Triangle& t : triangles)
-      for(int i = 0; i < 3; ++i) add(t[i], t[(i + 1) % 3]);
-  });
-  bool unique = true;
-  targets.for_each_sorted([&](auto begin, auto end) { unique = unique && std::adjacent_find(begin, end) == end; });
-  return unique;
-}
-
 // The mesh with vertex i = point i; the triangles it could not add are counted.
 template <typename Mesh>
 std::vector<std::size_t> add_triangles(const std::vector<P3>& points, const std::vector<Triangle>& triangles,
@@ -360,13 +346,13 @@ std::vector<std::size_t> add_triangles(const std::vector<P3>& points, const std:
   return added;
 }
 
-// The mesh of triangles whose directed edges are unique (each edge in each
-// direction at most once), built halfedge by halfedge in time linear in the
-// number of triangles: CGAL's add_face() searches the halfedges around a
+// The mesh of triangles that form an oriented manifold, built halfedge by
+// halfedge in time linear in the number of triangles: CGAL's add_face() searches the halfedges around a
 // vertex for each face added to it, quadratic in its valence (a fan of
 // valence 100,000 took 10 s). Vertex i = point i, face t = triangle t.
 // Returns false, leaving the mesh empty, if a vertex is not manifold (its
-// triangles form more than one fan): then CGAL's orientation duplicates it.
+// triangles form more than one fan: then CGAL's orientation duplicates it),
+// or if an edge has more than two triangles or two with the same direction.
 template <typename Mesh>
 bool build_oriented_manifold(const std::vector<P3>& points, const std::vector<Triangle>& triangles, Mesh& mesh)
 {
@@ -376,43 +362,49 @@ bool build_oriented_manifold(const std::vector<P3>& points, const std::vector<Tr
   const std::size_t directed = 3 * triangles.size();
   auto source = [&](std::size_t e) { return triangles[e / 3][e % 3]; };
   auto target = [&](std::size_t e) { return triangles[e / 3][(e + 1) % 3]; };
-  // the directed edges leaving each vertex, as (target, edge), sorted
-  Vertex_buckets<std::pair<std::size_t, std::size_t> > leaving(points.size(), [&](const auto& add) {
-    for(std::size_t e = 0; e < directed; ++e) add(source(e), std::make_pair(target(e), e));
+  // the directed edges grouped by their undirected edge (bucketed by the
+  // smaller vertex, sorted by the larger): the two halves of an edge are
+  // neighbours, found in one pass over memory in order
+  Vertex_buckets<std::pair<std::size_t, std::size_t> > by_edge(points.size(), [&](const auto& add) {
+    for(std::size_t e = 0; e < directed; ++e)
+      add((std::min)(source(e), target(e)), std::make_pair((std::max)(source(e), target(e)), e));
   });
-  leaving.for_each_sorted([](auto, auto) {});
-  const std::size_t none = std::numeric_limits<std::size_t>::max();
-  auto opposite_edge = [&](std::size_t e) {  // the edge target(e) -> source(e), if any
-    const auto begin = leaving.item.begin() + static_cast<std::ptrdiff_t>(leaving.first[target(e)]);
-    const auto end = leaving.item.begin() + static_cast<std::ptrdiff_t>(leaving.first[target(e) + 1]);
-    const auto it = std::lower_bound(begin, end, std::make_pair(source(e), std::size_t(0)));
-    return it != end && it->first == source(e) ? it->second : none;
-  };
   mesh.reserve(static_cast<size_type>(points.size()), static_cast<size_type>(directed / 2 + 3),
                static_cast<size_type>(triangles.size()));
   for(const P3& p : points) mesh.add_vertex(typename Mesh::Point(p[0], p[1], p[2]));
   std::vector<Halfedge_index> halfedge_of_edge(directed);
   std::vector<Halfedge_index> border_leaving(points.size()), incoming(points.size());
   std::vector<std::size_t> corners(points.size(), 0);
+  for(std::size_t e = 0; e < directed; ++e) ++corners[source(e)];
   bool manifold = true;
-  for(std::size_t e = 0; e < directed; ++e)
-  {
-    ++corners[source(e)];
-    if(halfedge_of_edge[e] != Halfedge_index()) continue;
-    const Halfedge_index h = mesh.add_edge();
-    halfedge_of_edge[e] = h;
-    mesh.set_target(h, Vertex_index(static_cast<size_type>(target(e))));
-    mesh.set_target(mesh.opposite(h), Vertex_index(static_cast<size_type>(source(e))));
-    const std::size_t o = opposite_edge(e);
-    if(o != none)
-      halfedge_of_edge[o] = mesh.opposite(h);
-    else  // a border halfedge, from target(e) to source(e)
+  by_edge.for_each_sorted([&](auto begin, auto end) {
+    for(auto it = begin; it != end && manifold;)
     {
-      Halfedge_index& b = border_leaving[target(e)];
-      manifold = manifold && b == Halfedge_index();  // two border halfedges leave a pinched vertex
-      b = mesh.opposite(h);
-      incoming[source(e)] = b;
+      auto last = it + 1;
+      while(last != end && last->first == it->first) ++last;
+      const std::size_t e = it->second;
+      // an edge of three faces, or of two with the same direction: not an oriented manifold
+      if(last - it > 2 || (last - it == 2 && source((it + 1)->second) == source(e))) { manifold = false; break; }
+      const Halfedge_index h = mesh.add_edge();
+      halfedge_of_edge[e] = h;
+      mesh.set_target(h, Vertex_index(static_cast<size_type>(target(e))));
+      mesh.set_target(mesh.opposite(h), Vertex_index(static_cast<size_type>(source(e))));
+      if(last - it == 2)
+        halfedge_of_edge[(it + 1)->second] = mesh.opposite(h);
+      else  // a border halfedge, from target(e) to source(e)
+      {
+        Halfedge_index& b = border_leaving[target(e)];
+        manifold = manifold && b == Halfedge_index();  // two border halfedges leave a pinched vertex
+        b = mesh.opposite(h);
+        incoming[source(e)] = b;
+      }
+      it = last;
     }
+  });
+  if(!manifold)
+  {
+    mesh.clear();
+    return false;
   }
   for(std::size_t t = 0; t < triangles.size(); ++t)
   {
@@ -495,8 +487,7 @@ Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path
   std::vector<std::pair<std::size_t, std::size_t> > copies;
   std::size_t skipped = 0;
   std::vector<std::size_t> added;
-  if(repair::directed_edges_are_unique(soup.points.size(), triangles) &&
-     repair::build_oriented_manifold(soup.points, triangles, out.mesh))
+  if(repair::build_oriented_manifold(soup.points, triangles, out.mesh))
   {
     added.resize(triangles.size());
     std::iota(added.begin(), added.end(), std::size_t(0));
