@@ -179,23 +179,24 @@ void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
   if(o.feature_angle) CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.feature_angle, maps.feature);
 }
 
-// The chain of optional named parameters, one step per option.
-template <typename NP>
-SMDF::Direction_field_result with_prescribed(Field& field, const Options& o, const Maps& maps, const NP& np)
+// The chain of optional named parameters, one step per option; `call(np)`
+// computes the field (the class's compute() or the free function).
+template <typename Call, typename NP>
+SMDF::Direction_field_result with_prescribed(const Call& call, const Options& o, const Maps&, const NP& np)
 {
-  if(o.prescribed) return field.compute(maps.direction, np.prescribed_singularities(*o.prescribed));
-  return field.compute(maps.direction, np);
+  if(o.prescribed) return call(np.prescribed_singularities(*o.prescribed));
+  return call(np);
 }
 
-template <typename NP>
-SMDF::Direction_field_result with_features(Field& field, const Options& o, const Maps& maps, const NP& np)
+template <typename Call, typename NP>
+SMDF::Direction_field_result with_features(const Call& field, const Options& o, const Maps& maps, const NP& np)
 {
   if(o.has_features || o.feature_angle) return with_prescribed(field, o, maps, np.edge_is_feature_map(maps.feature));
   return with_prescribed(field, o, maps, np);
 }
 
-template <typename NP>
-SMDF::Direction_field_result with_constraints(Field& field, const Options& o, const Maps& maps, const NP& np)
+template <typename Call, typename NP>
+SMDF::Direction_field_result with_constraints(const Call& field, const Options& o, const Maps& maps, const NP& np)
 {
   if(!o.constraints.empty())
     return with_features(field, o, maps,
@@ -203,8 +204,8 @@ SMDF::Direction_field_result with_constraints(Field& field, const Options& o, co
   return with_features(field, o, maps, np);
 }
 
-template <typename NP>
-SMDF::Direction_field_result with_alignment(Field& field, const Options& o, const Maps& maps, const NP& np)
+template <typename Call, typename NP>
+SMDF::Direction_field_result with_alignment(const Call& field, const Options& o, const Maps& maps, const NP& np)
 {
   if(o.prescribed)  // refused with a prescription: not instantiated there
   {
@@ -218,8 +219,8 @@ SMDF::Direction_field_result with_alignment(Field& field, const Options& o, cons
   return with_constraints(field, o, maps, np);
 }
 
-template <typename Out>
-SMDF::Direction_field_result compute_field(Field& field, const Options& o, const Maps& maps, Out singularities)
+template <typename Call, typename Out>
+SMDF::Direction_field_result compute_field(const Call& field, const Options& o, const Maps& maps, Out singularities)
 {
   const auto np = CGAL::parameters::degree(o.degree)
                     .smoothness_parameter(o.s)

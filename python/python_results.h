@@ -44,7 +44,7 @@ Result make_result(const Mesh& mesh, const Maps& maps, const std::vector<std::pa
 }
 
 // The module's object: its own copy of the mesh (with the maps of the
-// options) and the C++ class over it.
+// options) and, once compute() is called, the C++ class over it.
 class Direction_field_object
 {
 public:
@@ -52,12 +52,11 @@ public:
     : m_mesh(make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
                        option_as<Index_array>(F, "F", "an array of integers of shape (number of faces, 3)"))),
       m_maps(m_mesh)
-  {
-    py::gil_scoped_release release;
-    m_field = std::make_unique<Field>(m_mesh);
-  }
+  {}
 
-  // `as_free_function`: the timings count the construction too, as the C++ free function's do
+  // `as_free_function`: through the C++ free function (whose single call
+  // takes shortcuts the class cannot: the same field to rounding, and bit
+  // for bit the C++ function's), else through the class, kept for the next call
   Result compute(const py::kwargs& kwargs, bool as_free_function = false)
   {
     const Options o = read_options(kwargs, m_mesh);
@@ -68,17 +67,21 @@ public:
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(m_busy);
       fill_maps(o, m_mesh, m_maps);
-      report = compute_field(*m_field, o, m_maps, std::back_inserter(singular));
       if(as_free_function)
+        report = compute_field([&](const auto& np) {
+          return SMDF::compute_globally_optimal_directions(m_mesh, m_maps.direction, np);
+        }, o, m_maps, std::back_inserter(singular));
+      else
       {
-        report.timings.setup_ms += m_field->construction_ms();
-        report.timings.total_ms += m_field->construction_ms();
+        if(!m_field) m_field = std::make_unique<Field>(m_mesh);
+        report = compute_field([&](const auto& np) { return m_field->compute(m_maps.direction, np); }, o, m_maps,
+                               std::back_inserter(singular));
       }
     }
     return make_result(m_mesh, m_maps, singular, std::move(report));
   }
 
-  double construction_ms() const { return m_field->construction_ms(); }
+  double construction_ms() const { return m_field ? m_field->construction_ms() : 0.; }
 
 private:
   Mesh m_mesh;
@@ -184,7 +187,7 @@ void bind_field(py::module_& m)
          "V: (|V|, 3) float64 vertex positions; F: (|F|, 3) integer triangles (an oriented manifold mesh)")
     .def("compute", [](Direction_field_object& f, const py::kwargs& kw) { return f.compute(kw); }, compute_doc)
     .def_property_readonly("construction_ms", &Direction_field_object::construction_ms,
-                           "milliseconds of the C++ class's mesh work (indexing, geometry, components)");
+                           "milliseconds of the C++ class's mesh work (indexing, geometry, components; 0 before the first compute())");
   m.def("compute_globally_optimal_directions",
         [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {
           Direction_field_object field(V, F);

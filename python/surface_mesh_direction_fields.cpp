@@ -9,6 +9,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
+#include <CGAL/Surface_mesh_direction_fields/globally_optimal_directions.h>
 
 #include <algorithm>
 #include <array>

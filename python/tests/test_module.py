@@ -105,6 +105,34 @@ def test_same_field_as_the_program(program, shared, tmp_path, options, python):
     assert np.array_equal(r.singular_faces, singular) and r.index_sum == report["index_sum"]
 
 
+@pytest.mark.parametrize("name,options,python", [
+    ("plane_holes.off", ["--constrain-boundary", "tangent"], {"boundary": "tangent"}),
+    ("plane_holes.off", ["--constrain-boundary", "normal", "--degree", "2"], {"boundary": "normal", "degree": 2}),
+    ("spot.off", ["--align", "min-curvature", "--lambda", "-5", "--curvature-estimate", "hopf"],
+     {"align": "min-curvature", "lambda_t": -5.0, "curvature_estimate": "hopf"}),
+    ("spot.off", ["--prescribe", "PRESCRIBE"], {"prescribed": "PRESCRIBE"}),
+    ("spot.off", ["--guidance", "GUIDANCE", "--alignment-weight", "0.9"], {"guidance": "GUIDANCE", "alignment_weight": 0.9}),
+])
+def test_more_options_same_field_as_the_program(program, shared, tmp_path, name, options, python):
+    mesh = os.path.join(shared, name)
+    V, F, repairs = smdf.read_mesh(mesh)
+    if sum(repairs.values()) != 0:
+        pytest.skip("the file needs repairs: its vertex order differs from the mesh's")
+    if "GUIDANCE" in options:  # a stroke field: x on the upper half, nothing below
+        g = np.where(V[:, 2:3] > np.median(V[:, 2]), [[1.0, 0.0, 0.0]], [[0.0, 0.0, 0.0]])
+        np.savetxt(tmp_path / "g.txt", g, fmt="%.17g")
+        options = [str(tmp_path / "g.txt") if o == "GUIDANCE" else o for o in options]
+        python = dict(python, guidance=g)
+    if "PRESCRIBE" in options:  # the smoothest field's own singularities, given back
+        first = smdf.compute_globally_optimal_directions(V, F, degree=4)
+        np.savetxt(tmp_path / "p.txt", first.singular_faces, fmt="%d")
+        options = [str(tmp_path / "p.txt") if o == "PRESCRIBE" else o for o in options]
+        python = dict(python, prescribed=first.singular_faces)
+    directions, singular, report = run_program(program, mesh, str(tmp_path), *options)
+    r = smdf.compute_globally_optimal_directions(V, F, **python)
+    assert np.array_equal(r.directions, directions) and np.array_equal(r.singular_faces, singular)
+
+
 def test_options_change_the_field():
     V, F = sphere()
     base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions
