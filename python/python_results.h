@@ -54,9 +54,10 @@ public:
       m_maps(m_mesh)
   {}
 
-  // `as_free_function`: through the C++ free function (whose single call
-  // takes shortcuts the class cannot: the same field to rounding, and bit
-  // for bit the C++ function's), else through the class, kept for the next call
+  // `as_free_function`: through the C++ free function (bit for bit what C++
+  // users and the program get; its single call assembles an aligned system
+  // directly, which can change the last digit against the class), else
+  // through the class, kept for the next call
   Result compute(const py::kwargs& kwargs, bool as_free_function = false)
   {
     const Options o = read_options(kwargs, m_mesh);
