@@ -80,11 +80,8 @@ void write_file(const std::string& path, const std::function<void(std::ostream&)
   }
 }
 
-bool ends_with(const std::string& s, const std::string& tail)
-{
-  return s.size() >= tail.size() && std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
-                                               [](char a, char b) { return std::tolower(a) == b; });
-}
+// .vtu by the name (any case), as the program chooses
+bool is_vtu(const std::string& path) { return soup_reading::lower_case_extension(path) == "vtu"; }
 
 // vcglib (QuadWild) reads crosses only: as the program, other degrees are refused.
 void crosses_only(const SMDF::Direction_field_data& d, const char* format)
@@ -100,9 +97,9 @@ void bind_files(py::module_& m)
   typedef std::function<void(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
   const std::pair<const char*, Writer> writers[] = {
     {"write_vtk", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(ends_with(path, ".vtu")) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d); }},
+       if(is_vtu(path)) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d); }},
     {"write_vtk_singularities", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(ends_with(path, ".vtu")) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d); }},
+       if(is_vtu(path)) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d); }},
     {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) { SMDF::IO::write_PLY(os, d); }},
     {"write_rosy", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
        crosses_only(d, "rosy");

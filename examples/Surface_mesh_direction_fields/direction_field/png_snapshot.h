@@ -295,6 +295,16 @@ inline void draw_surface(const Scene& s, const View& view, const std::vector<V3>
   }
 }
 
+// An arrowhead on screen at `tip`, pointing along the unit screen direction
+// `along`: two strokes of length about `size` back from the tip.
+inline void draw_chevron(Canvas& canvas, const V3& tip, const V3& along, double size,
+                         const std::array<unsigned char, 3>& colour)
+{
+  const V3 across = {-along[1], along[0], 0.};
+  canvas.line(tip, tip + (-size) * along + (0.6 * size) * across, colour, 3.);
+  canvas.line(tip, tip + (-size) * along + (-0.6 * size) * across, colour, 3.);
+}
+
 // The n directions at vertices spread over the view (one per screen cell,
 // the visible vertex closest to the camera).
 inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>& screen, double mean_edge,
@@ -326,12 +336,7 @@ inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>&
       canvas.line(screen[i], tip, {20, 20, 20}, 3.);
       const double length = std::hypot(tip[0] - screen[i][0], tip[1] - screen[i][1]);
       if(s.degree % 2 == 1 && length > 2.)  // odd n: the directions have a sign, an arrowhead shows it
-      {
-        const V3 along = (1. / length) * (tip - screen[i]), across = {-along[1], along[0], 0.};
-        const double head = 0.4 * length;
-        canvas.line(tip, tip + (-head) * along + (0.5 * head) * across, {20, 20, 20}, 3.);
-        canvas.line(tip, tip + (-head) * along + (-0.5 * head) * across, {20, 20, 20}, 3.);
-      }
+        draw_chevron(canvas, tip, (1. / length) * (tip - screen[i]), 0.4 * length, {20, 20, 20});
     }
   }
 }
@@ -349,9 +354,7 @@ inline void draw_arrowheads(const std::vector<V3>& polyline, const View& view, C
     for(travelled += length; travelled >= every && length > 0.; travelled -= every)
     {
       const double t = 1. - (travelled - every) / length;  // where along a-b the mark falls
-      const V3 tip = a + t * (b - a), along = (1. / length) * (b - a), across = {-along[1], along[0], 0.};
-      canvas.line(tip, tip + (-size) * along + (0.6 * size) * across, {20, 60, 70}, 3.);
-      canvas.line(tip, tip + (-size) * along + (-0.6 * size) * across, {20, 60, 70}, 3.);
+      draw_chevron(canvas, a + t * (b - a), (1. / length) * (b - a), size, {20, 60, 70});
     }
   }
 }

@@ -170,10 +170,11 @@ class Streamline_tracer
 
 public:
   Streamline_tracer(const Direction_field_data& data, const Streamline_options& options)
-    : m_data(data), m_degree(data.degree), m_low(data.points[0]), m_high(data.points[0])
+    : m_data(data), m_degree(data.degree)
   {
-    for(const Vec3& p : data.points)
-      for(int k = 0; k < 3; ++k) { m_low[k] = (std::min)(m_low[k], p[k]); m_high[k] = (std::max)(m_high[k], p[k]); }
+    const std::array<Vec3, 2> box = bounding_box(data.points);
+    m_low = box[0];
+    m_high = box[1];
     m_diagonal = norm(m_high - m_low);
     m_spacing = options.seed_spacing * m_diagonal;
     m_max_length = options.maximum_length * m_diagonal;

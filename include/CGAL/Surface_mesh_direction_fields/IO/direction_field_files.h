@@ -270,18 +270,13 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
   bool cell_data = false;
   while(is >> word)
   {
-    if(word == "VECTORS")
+    if(word == "VECTORS")  // direction_k of every point (a PolyData file's singularity points last, not kept)
     {
       const std::string name = next_token(is, kind);
       next_token(is, kind);
-      const int k = parse_value<int>(name.substr(name.find('_') + 1), kind);
-      if(k < 0 || k >= data.degree) throw Invalid_input_error("VTK file: unexpected " + name);
-      for(std::size_t v = 0; v < cells.points; ++v)
-      {
-        Vec3 d;
-        for(double& x : d) x = next_value<double>(is, kind);
-        if(v < nv) data.directions[v][static_cast<std::size_t>(k)] = d;
-      }
+      std::vector<double> values(3 * cells.points);
+      for(double& x : values) x = next_value<double>(is, kind);
+      read_VTK_direction(name, values, data);
     }
     else if(word == "SCALARS")
       read_VTK_scalars(is, next_token(is, kind), cells, cell_data, data, singularity_values);
@@ -552,14 +547,8 @@ inline VTK_grid singularity_marker_grid(const Direction_field_data& data)
   g.title = "singularities of a direction field of degree " + std::to_string(data.degree) +
             " (CGAL Surface_mesh_direction_fields)";
   g.degree = data.degree;
-  Vec3 low = {0., 0., 0.}, high = {0., 0., 0.};
-  for(std::size_t i = 0; i < data.points.size(); ++i)
-    for(int c = 0; c < 3; ++c)
-    {
-      low[c] = i == 0 ? data.points[i][c] : (std::min)(low[c], data.points[i][c]);
-      high[c] = i == 0 ? data.points[i][c] : (std::max)(high[c], data.points[i][c]);
-    }
-  const double radius = 0.01 * norm(high - low);
+  const std::array<Vec3, 2> box = bounding_box(data.points);
+  const double radius = 0.01 * norm(box[1] - box[0]);
   VTK_array point_index{"singularity_index", 1, {}}, cell_index{"singularity_index", 1, {}};
   for(std::size_t i = 0; i < data.singularities.size(); ++i)
   {

@@ -43,6 +43,22 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double squared_norm(const Vec3& a) { return dot(a, a); }
 // a / |a|; a itself if |a| is not positive (the zero vector stays zero)
+// The corners (low, high) of the axis-aligned bounding box of `points`
+// (both zero if there are none).
+inline std::array<Vec3, 2> bounding_box(const std::vector<Vec3>& points)
+{
+  std::array<Vec3, 2> box{};
+  if(points.empty()) return box;
+  box[0] = box[1] = points[0];
+  for(const Vec3& p : points)
+    for(int k = 0; k < 3; ++k)
+    {
+      box[0][k] = p[k] < box[0][k] ? p[k] : box[0][k];
+      box[1][k] = p[k] > box[1][k] ? p[k] : box[1][k];
+    }
+  return box;
+}
+
 inline Vec3 normalized(const Vec3& a)
 {
   const double l = norm(a);
