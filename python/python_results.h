@@ -113,6 +113,8 @@ void bind_result(py::module_& m)
     .def_property_readonly("iterations", [](const Result& r) { return r.report.iterations; })
     .def_property_readonly("residual", [](const Result& r) { return r.report.residual; })
     .def_property_readonly("converged", [](const Result& r) { return r.report.converged; })
+    .def_property_readonly("tangent_plane_vertices", [](const Result& r) { return r.report.tangent_plane_vertices; },
+                           "vertices of folded triangles laid out in the fitted tangent plane (0 without folds)")
     .def_property_readonly("index_sum", [](const Result& r) { return r.report.index_sum; },
                            "sum of k over the singular faces (n times the Euler characteristic on closed meshes)")
     .def_property_readonly("component_index_sums", [](const Result& r) {

@@ -1,9 +1,11 @@
-// Helpers shared by the tests: output maps, independent vertex normals,
+// Helpers shared by the tests: output maps, independent vertex normals (and
+// the package's at folded triangles),
 // angles between n-directions, and the check of a documented error.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_FIELD_CHECKS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_FIELD_CHECKS_H
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/folded_fans.h>
 
 #include <cmath>
 #include <iostream>
@@ -39,6 +41,34 @@ auto angle_weighted_normals(const Mesh& mesh)
   }
   for(Vector_3& n : normals)
     if(n != CGAL::NULL_VECTOR) n = n / std::sqrt(n.squared_length());
+  return normals;
+}
+
+// The normals the package's outputs are orthogonal to by default: the
+// angle-weighted normals above, except at the vertices of folded triangles,
+// where the package takes the fitted surface's normal (user manual, "Folded
+// Triangles"; the replaced ones are those of the package's own function).
+// `folded`, if given, receives which vertices those are.
+template <typename Mesh>
+auto package_normals(const Mesh& mesh, std::vector<bool>* folded = nullptr)
+{
+  namespace I = CGAL::Surface_mesh_direction_fields::internal;
+  typedef typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3 Vector_3;
+  std::vector<Vector_3> normals = angle_weighted_normals(mesh);
+  I::Indexed_mesh m = I::make_indexed_mesh(
+    mesh, [&mesh](typename Mesh::Vertex_index v) { const auto& p = mesh.point(v); return I::Vec3{p.x(), p.y(), p.z()}; },
+    get(CGAL::vertex_index, mesh), get(CGAL::face_index, mesh));
+  I::Tangent_spaces ts = I::compute_tangent_spaces(m, 1e-6);
+  std::vector<I::Vec3> ours(normals.size());
+  for(std::size_t v = 0; v < normals.size(); ++v) ours[v] = {normals[v].x(), normals[v].y(), normals[v].z()};
+  I::lay_out_folded_fans(m, ours, true, ts);
+  if(folded != nullptr) folded->assign(normals.size(), false);
+  for(std::size_t v = 0; v < normals.size(); ++v)
+    if(ts.projected_fan[v])
+    {
+      normals[v] = Vector_3(ours[v][0], ours[v][1], ours[v][2]);
+      if(folded != nullptr) (*folded)[v] = true;
+    }
   return normals;
 }
 

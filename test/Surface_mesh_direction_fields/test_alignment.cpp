@@ -22,6 +22,7 @@
 
 #include "field_checks.h"
 #include "generated_meshes.h"
+#include "umbilics.h"
 #include "test_support.h"
 
 #include <cmath>
@@ -153,55 +154,6 @@ static void check_cylinder(Test_report& report)
                                          " curvature lines are " + (max ? "circumferential" : "axial") + " (" +
                                          std::to_string(worst * 180. / CGAL_PI) + " degrees)");
   }
-}
-
-// The singular faces of the curvature line field (n = 2) of an ellipsoid at
-// alignment weight t, and how many of them are of index +1/2 within two edge
-// lengths of an umbilic, one per umbilic.
-struct Umbilic_count
-{
-  std::size_t singular_faces = 0, near_umbilics = 0;
-  int index_sum = 0;
-};
-
-static Umbilic_count umbilic_singularities(Mesh& mesh, double a, double b, double c, double t,
-                                           SMDF::Principal_curvature_estimate estimate)
-{
-  // umbilics: (+-x0, 0, +-z0)
-  const double x0 = a * std::sqrt((a * a - b * b) / (a * a - c * c));
-  const double z0 = c * std::sqrt((b * b - c * c) / (a * a - c * c));
-  const std::vector<Point_3> umbilics = {Point_3(x0, 0, z0), Point_3(-x0, 0, z0), Point_3(x0, 0, -z0), Point_3(-x0, 0, -z0)};
-  double edge = 0.;
-  for(auto e : mesh.edges())
-    edge += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))), mesh.point(mesh.target(mesh.halfedge(e)))));
-  edge /= mesh.number_of_edges();
-  auto d = direction_map(mesh, "v:umbilic_field");
-  Singularities sing;
-  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
-    mesh, d, params::degree(2).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM)
-               .principal_curvature_estimate(estimate).alignment_weight(t)
-               .singularities_output_iterator(std::back_inserter(sing)));
-  mesh.remove_property_map(d);
-  Umbilic_count count;
-  count.singular_faces = sing.size();
-  count.index_sum = r.index_sum;
-  std::vector<bool> found(4, false);
-  for(const auto& fk : sing)
-  {
-    Vector_3 centre = CGAL::NULL_VECTOR;
-    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(fk.first), mesh)) centre = centre + (mesh.point(v) - CGAL::ORIGIN) / 3.;
-    std::size_t which = 0;
-    for(std::size_t k = 1; k < 4; ++k)
-      if(CGAL::squared_distance(CGAL::ORIGIN + centre, umbilics[k]) < CGAL::squared_distance(CGAL::ORIGIN + centre, umbilics[which]))
-        which = k;
-    const double distance = std::sqrt(CGAL::squared_distance(CGAL::ORIGIN + centre, umbilics[which]));
-    if(fk.second == 1 && distance <= 2. * edge && !found[which])
-    {
-      found[which] = true;
-      ++count.near_umbilics;
-    }
-  }
-  return count;
 }
 
 // Triaxial ellipsoids, regular and with vertices jittered along the surface by

@@ -449,7 +449,7 @@ int main()
       std::cout << *name << ": |V| = " << mesh.number_of_vertices() << ", eigenvalue " << r.components[0].eigenvalue
                 << ", " << r.iterations << " iterations, residual " << r.residual << ", "
                 << r.number_of_singular_faces << " singular faces\n";
-      check_outputs(report, *name, mesh, dir, angle_weighted_normals(mesh));
+      check_outputs(report, *name, mesh, dir, package_normals(mesh));
       bool eigenvalues_finite = true;
       for(const auto& c : r.components) eigenvalues_finite = eigenvalues_finite && std::isfinite(c.eigenvalue) && c.eigenvalue > -1e-9;
       report.check(eigenvalues_finite, std::string(*name) + ": finite, non-negative eigenvalues");

@@ -30,6 +30,7 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -392,9 +393,35 @@ static void check_any_scale(Test_report& report)
   }
 }
 
+// Out of memory in one half of the package's parallel_invoke() leaves the
+// other half's parallel loops complete (an exception reaching TBB would cancel
+// them, and they would return with iterations not run), and is rethrown.
+static void check_parallel_invoke_exceptions(Test_report& report)
+{
+  namespace I = CGAL::Surface_mesh_direction_fields::internal;
+  const int rounds = 20;
+  std::vector<int> done(std::size_t(1) << 20, 0);
+  bool thrown = false;
+  try
+  {
+    I::parallel_invoke([] { throw std::bad_alloc(); },
+                       [&] {
+                         for(int round = 0; round < rounds; ++round)
+                           I::parallel_for_each_index(done.size(), [&](std::size_t i) { ++done[i]; });
+                       });
+  }
+  catch(const std::bad_alloc&)
+  {
+    thrown = true;
+  }
+  const bool complete = std::all_of(done.begin(), done.end(), [&](int d) { return d == rounds; });
+  report.check(thrown && complete, "parallel_invoke: an exception in one half is rethrown, the other half's loops complete");
+}
+
 int main()
 {
   Test_report report("robustness");
+  check_parallel_invoke_exceptions(report);
   check_any_scale(report);
   check_degree_range(report);
   check_models(report);

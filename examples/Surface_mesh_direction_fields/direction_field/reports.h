@@ -74,7 +74,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
   os << ",\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
-     << ",\"mollification\":" << number(r.mollification)
+     << ",\"mollification\":" << number(r.mollification) << ",\"tangent_plane_vertices\":" << r.tangent_plane_vertices
      << ",\"prescribed\":" << (r.prescribed ? "true" : "false") << ",\"holonomy_error\":" << number(r.holonomy_error)
      << ",\"lambda\":" << number(main_component(r).lambda)
      << ",\"alignment_weight\":" << number(main_component(r).alignment_weight)
@@ -124,6 +124,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
        << r.holonomy_error << " rad)\n";
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
+  if(r.tangent_plane_vertices > 0)
+    os << "folded faces    " << r.tangent_plane_vertices << " vertices laid out in the fitted tangent plane\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];

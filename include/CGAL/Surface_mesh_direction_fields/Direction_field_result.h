@@ -123,6 +123,9 @@ struct Direction_field_result
   bool converged = true;
   /// the length added to every edge by the intrinsic mollification (0 if the mesh needed none)
   double mollification = 0.;
+  /// the number of vertices of folded triangles whose fans are laid out in the tangent plane of the
+  /// fitted surface (user manual, section \ref SMDF_folds; 0 on a mesh without folds)
+  std::size_t tangent_plane_vertices = 0;
   /// `true` if the singularities were prescribed (named parameter `prescribed_singularities`)
   bool prescribed = false;
   /// for prescribed singularities: the largest error, in radians, of the adjusted connection's holonomy

@@ -31,6 +31,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/folded_fans.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/mass_operator.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
@@ -210,6 +211,9 @@ public:
         for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
           m_normals[i] = internal::normalized(to_array(get(vnm, m_vertex_of_index[i])));
       }
+      m_tangent_plane_vertices = internal::lay_out_folded_fans(
+        m_mesh, m_normals, is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value,
+        m_tangent_spaces);
     };
     internal::parallel_invoke(find_components, compute_tangent_planes);
     internal::check_components_have_area(m_mesh, m_components, m_tangent_spaces.mollification);
@@ -248,6 +252,7 @@ public:
     result.smoothness_parameter = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
     internal::check_field_parameters(result.degree, result.smoothness_parameter);
     result.mollification = m_tangent_spaces.mollification / m_length_scale;
+    result.tangent_plane_vertices = m_tangent_plane_vertices;
     if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
       return compute_prescribed(vertex_direction_map, np, std::move(result), start);
     const internal::Eigen_solve_options options = eigen_solve_options(np, result.smoothness_parameter);
@@ -1128,6 +1133,7 @@ private:
   std::function<std::size_t(face_descriptor)> m_index_of_face;      // its face index map
   internal::Indexed_mesh m_mesh;  // its coordinates times m_length_scale
   double m_length_scale = 1.;
+  std::size_t m_tangent_plane_vertices = 0;  // laid out at folded triangles (folded_fans.h)
   internal::Tangent_spaces m_tangent_spaces;
   internal::Components m_components;
   std::vector<internal::Vec3> m_normals;

@@ -243,7 +243,11 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                           output directions}
     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
                    as key type and `GT::Vector_3` as value type}
-    \cgalParamDefault{the angle-weighted mean of the incident face normals}
+    \cgalParamDefault{the angle-weighted mean of the incident face normals; at the vertices of folded
+                      triangles, the normal of the surface fitted to the vertex's two-ring (user manual,
+                      section \ref SMDF_folds)}
+    \cgalParamExtra{given normals also tell folded triangles: a face whose normal points against the given
+                    normal of one of its vertices is laid out in the tangent planes of its vertices}
   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{an instance of a geometric traits class}

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -97,11 +98,26 @@ void parallel_for_each_chunk(std::size_t n, const ChunkBody& body)
 // first() and second(), two independent pieces of work, at the same time
 // when TBB is available (each may run parallel loops of its own: the thread
 // that finishes first joins the other's loops); one after the other otherwise.
+// Each catches its own exception, and the first one's is rethrown once both
+// have finished: an exception reaching TBB would cancel the other's nested
+// parallel loops, which then return with part of their iterations not run
+// (out of memory in one used to crash the other on half-built data).
 template <typename First, typename Second>
 void parallel_invoke(const First& first, const Second& second)
 {
 #if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
-  tbb::parallel_invoke(first, second);
+  std::exception_ptr first_error, second_error;
+  tbb::parallel_invoke(
+    [&] {
+      try { first(); }
+      catch(...) { first_error = std::current_exception(); }
+    },
+    [&] {
+      try { second(); }
+      catch(...) { second_error = std::current_exception(); }
+    });
+  if(first_error) std::rethrow_exception(first_error);
+  if(second_error) std::rethrow_exception(second_error);
 #else
   first();
   second();

@@ -42,7 +42,7 @@ struct Connection
 
 // rho_ij = n (theta_j(j -> i) - theta_i(i -> j) + pi). Inside face (i, j, k),
 // the halfedge j -> i is the second side of j's corner, so
-// theta_j(j -> i) = theta_j(j -> k) + s_j alpha_j.
+// theta_j(j -> i) = theta_j(j -> k) + s_j alpha_j (the corner's width).
 // rho_ji = -rho_ij (mod 2 pi), so an interior edge's transport is computed
 // once, on the side of the smaller corner, and the other side gets its
 // conjugate: half the sines and cosines, and r_ji = conj(r_ij) exactly.
@@ -60,9 +60,8 @@ inline Connection compute_connection(const Indexed_mesh& m, const Tangent_spaces
     {
       const std::size_t ci = 3 * f + c, cj = 3 * f + (c + 1) % 3;
       if(!is_computed_side(ci)) continue;
-      const std::size_t j = m.faces[f][(c + 1) % 3];
       const double theta_ij = ts.corner_theta[ci];
-      const double theta_ji = ts.corner_theta[cj] + ts.angle_scale[j] * ts.corner_angle[cj];
+      const double theta_ji = ts.corner_theta[cj] + ts.corner_width[cj];
       // Reduce before multiplying by n so that large degrees keep their accuracy.
       const double angle = reduce_angle(theta_ji - theta_ij + CGAL_PI);
       con.transport[ci] = std::polar(1., reduce_angle(n * angle));

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/folded_fans.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vertex_normals.h>
 
@@ -86,11 +87,18 @@ inline Vec3 tangent_direction(const Indexed_mesh& m, const Tangent_spaces& ts, s
 
   Vec3 w{0., 0., 0.};
   bool placed = false;
+  Projected_frame frame;
+  if(ts.projected_fan[v] && projected_frame(m, v, normal, frame))
+  {
+    // the projected layout (folded_fans.h): a rotation about the normal
+    w = std::cos(phi) * frame.x + std::sin(phi) * frame.y;
+    placed = true;
+  }
   for(std::size_t k = begin; k < end && !placed; ++k)
   {
     const std::size_t corner = m.fan_corners[k];
     const double theta0 = ts.corner_theta[corner];
-    const double width = s * ts.corner_angle[corner];
+    const double width = ts.corner_width[corner];  // s * alpha
     if(phi < theta0 + width || k + 1 == end)
     {
       if(phi >= theta0 + width && m.is_border_vertex[v])

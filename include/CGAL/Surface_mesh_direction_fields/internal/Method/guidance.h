@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/folded_fans.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
@@ -100,6 +101,14 @@ std::vector<std::complex<double> > curvature_line_field(const Indexed_mesh& mesh
 inline double rescaled_angle_of(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t v, const Vec3& w,
                                 const Vec3& normal, double& error_out)
 {
+  Projected_frame frame;
+  if(ts.projected_fan[v] && projected_frame(m, v, normal, frame))
+  {
+    // the projected layout (folded_fans.h): the angle of w about the normal
+    error_out = 0.;
+    const double phi = std::atan2(dot(w, frame.y), dot(w, frame.x));
+    return phi < 0. ? phi + 2. * CGAL_PI : phi;
+  }
   const Vec3 plane_normal = cross(w, normal);  // the vectors projecting onto the line of w lie in span(w, N)
   double best_phi = 0., best_error = 1e300;
   for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
@@ -179,7 +188,7 @@ inline std::complex<double> boundary_coefficient(const Indexed_mesh& m, const Ta
 {
   double theta = 0.;
   for(std::size_t k = m.fan_offsets[v]; k < m.fan_offsets[v + 1]; ++k)
-    theta += ts.corner_angle[m.fan_corners[k]];  // s = 1 on the boundary
+    theta += ts.corner_width[m.fan_corners[k]];  // s = 1 on the boundary
   const double phi = normal ? 0.5 * theta : 0.5 * (theta - CGAL_PI);
   return std::polar(1., degree * phi);
 }

@@ -43,6 +43,10 @@ struct Tangent_spaces
   std::vector<double> angle_scale;        // s_i = 2 pi / (angle sum) inside, 1 on the boundary
   std::vector<double> corner_angle;       // Euclidean angle alpha of corner 3f+c
   std::vector<double> corner_theta;       // theta_i(i -> j) of the corner's first side, i = faces[f][c], j = faces[f][c+1]
+  std::vector<double> corner_width;       // theta of the corner's second side minus corner_theta: s_i alpha, or
+                                          // the signed angle in the vertex's tangent plane (folded_fans.h)
+  std::vector<unsigned char> projected_fan;  // 1 where the layout is the fan projected onto the vertex's tangent
+                                             // plane (folded_fans.h), 0 where it is the rescaled intrinsic one
   std::vector<double> face_area;          // |t|
   std::vector<double> face_angle_defect;  // kappa_t = sum of the rescaled corner angles - pi
   double mollification = 0.;              // the length added to every edge (0: none was needed)
@@ -176,43 +180,50 @@ inline void compute_corner_angles_and_areas(const Indexed_mesh& m, Tangent_space
       throw Invalid_input_error("face " + std::to_string(f) + " is degenerate (zero area)");
 }
 
+// The rescaled intrinsic layout of v's fan: s_v, and the angle theta of
+// each corner's first side, swept counter-clockwise from the reference
+// direction (the first side of the first corner) in steps of s_v alpha.
+inline void lay_out_intrinsic_fan(const Indexed_mesh& m, std::size_t v, Tangent_spaces& ts)
+{
+  const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
+  ts.angle_scale[v] = 1.;
+  ts.projected_fan[v] = 0;
+  if(begin == end) return;
+  if(!m.is_border_vertex[v])
+  {
+    double angle_sum = 0.;
+    for(std::size_t k = begin; k < end; ++k) angle_sum += ts.corner_angle[m.fan_corners[k]];
+    ts.angle_scale[v] = 2. * CGAL_PI / angle_sum;
+  }
+  double theta = 0.;
+  for(std::size_t k = begin; k < end; ++k)
+  {
+    const std::size_t corner = m.fan_corners[k];
+    ts.corner_theta[corner] = theta;
+    ts.corner_width[corner] = ts.angle_scale[v] * ts.corner_angle[corner];
+    theta += ts.corner_width[corner];
+  }
+}
+
+// kappa_t: the sum of the face's corner widths minus pi.
+inline double face_angle_defect(const Tangent_spaces& ts, std::size_t f)
+{
+  return ts.corner_width[3 * f] + ts.corner_width[3 * f + 1] + ts.corner_width[3 * f + 2] - CGAL_PI;
+}
+
 inline Tangent_spaces compute_tangent_spaces(const Indexed_mesh& m, double relative_mollification = 0.)
 {
-  const double two_pi = 2. * CGAL_PI;
   Tangent_spaces ts;
   compute_corner_angles_and_areas(m, ts, relative_mollification);
 
   const std::size_t nv = m.number_of_vertices();
   ts.angle_scale.assign(nv, 1.);
+  ts.projected_fan.assign(nv, 0);
   ts.corner_theta.assign(3 * m.number_of_faces(), 0.);
-  parallel_for_each_index(nv, [&](std::size_t v) {
-    const std::size_t begin = m.fan_offsets[v], end = m.fan_offsets[v + 1];
-    if(begin == end)
-      return;
-    if(!m.is_border_vertex[v])
-    {
-      double angle_sum = 0.;
-      for(std::size_t k = begin; k < end; ++k)
-        angle_sum += ts.corner_angle[m.fan_corners[k]];
-      ts.angle_scale[v] = two_pi / angle_sum;
-    }
-    // Sweep counter-clockwise from the reference direction.
-    double theta = 0.;
-    for(std::size_t k = begin; k < end; ++k)
-    {
-      const std::size_t corner = m.fan_corners[k];
-      ts.corner_theta[corner] = theta;
-      theta += ts.angle_scale[v] * ts.corner_angle[corner];
-    }
-  });
-
+  ts.corner_width.assign(3 * m.number_of_faces(), 0.);
+  parallel_for_each_index(nv, [&](std::size_t v) { lay_out_intrinsic_fan(m, v, ts); });
   ts.face_angle_defect.resize(m.number_of_faces());
-  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) {
-    double sum = 0.;
-    for(int c = 0; c < 3; ++c)
-      sum += ts.angle_scale[m.faces[f][c]] * ts.corner_angle[3 * f + c];
-    ts.face_angle_defect[f] = sum - CGAL_PI;
-  });
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) { ts.face_angle_defect[f] = face_angle_defect(ts, f); });
   return ts;
 }
 
