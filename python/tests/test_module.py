@@ -291,3 +291,29 @@ def test_writers_refuse(tmp_path):
     with pytest.raises(ValueError):
         smdf.write_vtk(str(tmp_path / "f.vtu"), *octahedron(), r)  # computed on another mesh
     assert os.listdir(tmp_path) == []
+
+
+def folded_grid(size=6):
+    """A flat grid with one vertex pushed over the opposite side of a triangle of its fan."""
+    V = np.array([[i, j, 0.0] for j in range(size) for i in range(size)], dtype=np.float64)
+    F = []
+    for j in range(size - 1):
+        for i in range(size - 1):
+            a, b, c, d = j * size + i, j * size + i + 1, (j + 1) * size + i + 1, (j + 1) * size + i
+            F += [[a, b, c], [a, c, d]]
+    centre = 2 * size + 2
+    V[centre, :2] += [1.3, 0.4]  # past the side (3,2)-(3,3) of its triangle (2,2),(3,2),(3,3)
+    return V, np.array(F, dtype=np.int64)
+
+
+def test_folded_triangles_laid_out_in_the_tangent_plane():
+    V, F = folded_grid()
+    normals = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    assert (normals[:, 2] < 0).any()  # the grid is folded
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    assert r.tangent_plane_vertices >= 3
+    assert np.allclose(np.linalg.norm(r.directions, axis=1), 1.0)
+    assert np.allclose(r.directions[:, 2], 0.0, atol=1e-12)  # in the plane's tangent plane, also at the fold
+    flat_V, flat_F = folded_grid()
+    flat_V[2 * 6 + 2, :2] = [2.0, 2.0]
+    assert smdf.compute_globally_optimal_directions(flat_V, flat_F, degree=4).tangent_plane_vertices == 0
