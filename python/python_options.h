@@ -18,14 +18,11 @@ struct Maps
   Mesh::Property_map<Vertex_index, double> magnitude;
   Mesh::Property_map<Edge_index, bool> feature;
 
+  // the outputs' maps; those of the options are added when an option first needs them
   explicit Maps(Mesh& mesh)
   {
     direction = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_direction").first;
-    guidance = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_guidance").first;
-    constraint = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_constraint").first;
-    constrained = mesh.add_property_map<Vertex_index, bool>("v:smdf_constrained", false).first;
     magnitude = mesh.add_property_map<Vertex_index, double>("v:smdf_magnitude", 0.).first;
-    feature = mesh.add_property_map<Edge_index, bool>("e:smdf_feature", false).first;
   }
 };
 
@@ -164,19 +161,29 @@ Options read_options(const py::dict& kw, Mesh& mesh)
 // The maps take the options' values (the mesh's own maps, reset at every call).
 void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
 {
-  for(Vertex_index v : mesh.vertices())
+  if(!o.guidance.empty())
   {
-    put(maps.constrained, v, false);
-    if(!o.guidance.empty()) put(maps.guidance, v, o.guidance[static_cast<std::size_t>(v)]);
+    maps.guidance = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_guidance").first;
+    for(Vertex_index v : mesh.vertices()) put(maps.guidance, v, o.guidance[static_cast<std::size_t>(v)]);
   }
-  for(const auto& c : o.constraints)
+  if(!o.constraints.empty())
   {
-    put(maps.constrained, c.first, true);
-    put(maps.constraint, c.first, c.second);
+    maps.constrained = mesh.add_property_map<Vertex_index, bool>("v:smdf_constrained", false).first;
+    maps.constraint = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_constraint").first;
+    for(Vertex_index v : mesh.vertices()) put(maps.constrained, v, false);
+    for(const auto& c : o.constraints)
+    {
+      put(maps.constrained, c.first, true);
+      put(maps.constraint, c.first, c.second);
+    }
   }
-  for(Edge_index e : mesh.edges()) put(maps.feature, e, false);
-  for(Edge_index e : o.features) put(maps.feature, e, true);
-  if(o.feature_angle) CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.feature_angle, maps.feature);
+  if(o.has_features || o.feature_angle)
+  {
+    maps.feature = mesh.add_property_map<Edge_index, bool>("e:smdf_feature", false).first;
+    for(Edge_index e : mesh.edges()) put(maps.feature, e, false);
+    for(Edge_index e : o.features) put(maps.feature, e, true);
+    if(o.feature_angle) CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.feature_angle, maps.feature);
+  }
 }
 
 // The chain of optional named parameters, one step per option; `call(np)`

@@ -39,6 +39,17 @@ namespace {
 
 [[noreturn]] void refuse(const std::string& message) { throw py::value_error(message); }
 
+// The rows of a C-contiguous (n, 3) numpy array, as build_oriented_manifold()
+// reads them: the mesh is built from the arrays without another copy.
+template <typename T>
+struct Rows_of_three
+{
+  const T* data;
+  std::size_t rows;
+  std::size_t size() const { return rows; }
+  const T* operator[](std::size_t i) const { return data + 3 * i; }
+};
+
 // V (|V| x 3, finite) and F (|F| x 3 indices into V) as a Surface_mesh, built
 // as the command-line program builds a clean file's mesh (the same halfedges,
 // hence the same field bit for bit); the faces must already form an oriented
@@ -49,27 +60,24 @@ Mesh make_mesh(const Float_array& V, const Index_array& F)
   if(V.ndim() != 2 || V.shape(1) != 3) refuse("V must be an array of shape (number of vertices, 3)");
   if(F.ndim() != 2 || F.shape(1) != 3) refuse("F must be an array of shape (number of faces, 3): triangles");
   if(V.shape(0) == 0 || F.shape(0) == 0) refuse("the mesh is empty (V and F need at least one row)");
-  const auto v = V.unchecked<2>();
-  const auto f = F.unchecked<2>();
-  std::vector<rr::P3> points(static_cast<std::size_t>(V.shape(0)));
-  for(py::ssize_t i = 0; i < V.shape(0); ++i)
+  const Rows_of_three<double> points{V.data(), static_cast<std::size_t>(V.shape(0))};
+  const Rows_of_three<long long> triangles{F.data(), static_cast<std::size_t>(F.shape(0))};
+  for(std::size_t i = 0; i < points.size(); ++i)
     for(int c = 0; c < 3; ++c)
-      if(!std::isfinite(points[static_cast<std::size_t>(i)][c] = v(i, c)))
-        refuse("V row " + std::to_string(i) + " has a non-finite coordinate");
-  std::vector<rr::Triangle> triangles(static_cast<std::size_t>(F.shape(0)));
-  for(py::ssize_t i = 0; i < F.shape(0); ++i)
+      if(!std::isfinite(points[i][c])) refuse("V row " + std::to_string(i) + " has a non-finite coordinate");
+  for(std::size_t i = 0; i < triangles.size(); ++i)
   {
-    auto& t = triangles[static_cast<std::size_t>(i)];
+    const long long* t = triangles[i];
     for(int c = 0; c < 3; ++c)
-    {
-      if(f(i, c) < 0 || f(i, c) >= V.shape(0))
-        refuse("F row " + std::to_string(i) + " refers to vertex " + std::to_string(f(i, c)) + ", not in V");
-      t[c] = static_cast<std::size_t>(f(i, c));
-    }
+      if(t[c] < 0 || t[c] >= V.shape(0))
+        refuse("F row " + std::to_string(i) + " refers to vertex " + std::to_string(t[c]) + ", not in V");
     if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) refuse("F row " + std::to_string(i) + " repeats a vertex");
   }
   Mesh mesh;
-  if(!rr::build_oriented_manifold(points, triangles, mesh))
+  bool built = false;
+  try { built = rr::build_oriented_manifold(points, triangles, mesh); }
+  catch(const Mesh_input_error& e) { refuse(e.what()); }
+  if(!built)
     refuse("the faces do not form an oriented manifold mesh (a repeated face, an edge of more than two faces, "
            "a pinched vertex or inconsistent orientation); read_mesh() repairs mesh files");
   return mesh;

@@ -189,6 +189,10 @@ BAD = [
     (V0, np.vstack([F0, [[0, 2, 1]]]), ValueError),             # an edge of three faces
     (V0, F0[:, ::-1][[0, 1, 2, 3, 4, 5, 6]].tolist() + [F0[7].tolist()], ValueError),  # inconsistent orientation
     (V0, np.array([[0, 0, 1]] + F0[1:].tolist()), ValueError),   # a degenerate face
+    (np.vstack([V0, V0 + 3]), np.vstack([F0, np.where(F0 == 0, 0, F0 + 6)]), ValueError),  # two closed fans at vertex 0
+    (V0[:5], np.array([[0, 1, 2], [0, 3, 4]]), ValueError),     # two open fans at vertex 0 (a bowtie)
+    (np.vstack([V0, V0[:2] + 3]), np.vstack([F0, [[0, 6, 7]]]), ValueError),  # an open fan at a closed one's vertex
+    (V0, np.asfortranarray(F0), None), (np.asfortranarray(V0), F0[::-1], None),  # strided: converted once
     ("not an array", F0, (TypeError, ValueError)), (V0, [["a", "b", "c"]], (TypeError, ValueError)),
     (V0.astype(np.float32), F0, None), (V0, F0.astype(np.int32), None),      # converted once, accepted
 ]

@@ -29,11 +29,16 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+
 #include "read_polygon_soup.h"
 
 #include <algorithm>
 #include <numeric>
 #include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -346,99 +351,195 @@ std::vector<std::size_t> add_triangles(const std::vector<P3>& points, const std:
   return added;
 }
 
+// 32-bit indices of directed edges, as Surface_mesh's: half the memory
+// traffic of std::size_t; `no_edge`: none.
+typedef std::uint32_t Edge_number;
+constexpr Edge_number no_edge = std::numeric_limits<Edge_number>::max();
+
+// The directed edges of the triangles (edge 3t+k goes from corner k of
+// triangle t to corner k+1) listed by their source vertex, each vertex's
+// sorted by target; the opposite of each (the same two vertices the other
+// way; no_edge on the border) and the border edge leaving each vertex.
+// `Triangles` is a range of triangles whose t[k] are vertex numbers (a
+// std::vector<Triangle>, or the rows of a numpy array).
+template <typename Triangles>
+struct Directed_edges
+{
+  typedef std::pair<Edge_number, Edge_number> Target_and_edge;
+  const Triangles& triangles;
+  std::vector<Edge_number> first_leaving;  // the edges leaving v: leaving[first_leaving[v] .. first_leaving[v+1])
+  std::vector<Target_and_edge> leaving;
+  std::vector<Edge_number> opposite;
+  std::vector<Edge_number> border_leaving;  // per vertex
+
+  std::size_t source(std::size_t e) const { return triangles[e / 3][e % 3]; }
+  std::size_t target(std::size_t e) const { return triangles[e / 3][(e + 1) % 3]; }
+  static Edge_number previous(Edge_number e) { return e - e % 3 + (e + 2) % 3; }
+  std::size_t number_of_vertices() const { return border_leaving.size(); }
+  auto begin(std::size_t v) const { return leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v]); }
+  auto end(std::size_t v) const { return leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v + 1]); }
+
+  Directed_edges(std::size_t points, const Triangles& t)
+    : triangles(t), first_leaving(points + 2, 0), leaving(3 * t.size()), opposite(3 * t.size(), no_edge),
+      border_leaving(points, no_edge)
+  {
+    for(std::size_t e = 0; e < leaving.size(); ++e) ++first_leaving[source(e) + 2];
+    for(std::size_t v = 2; v < first_leaving.size(); ++v) first_leaving[v] += first_leaving[v - 1];
+    for(std::size_t e = 0; e < leaving.size(); ++e)
+      leaving[first_leaving[source(e) + 1]++] = {static_cast<Edge_number>(target(e)), static_cast<Edge_number>(e)};
+    first_leaving.pop_back();
+    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(
+      points, [&](std::size_t v) { std::sort(leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v]),
+                                             leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v + 1])); });
+  }
+
+  // Finds every edge's opposite and each vertex's border edge; false if a
+  // directed edge is repeated (an edge of two triangles with the same
+  // direction, or of more than two) or two border edges leave one vertex.
+  bool pair_up()
+  {
+    std::atomic<bool> refused{false};
+    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(number_of_vertices(), [&](std::size_t u) {
+      for(auto it = begin(u); it != end(u); ++it)
+      {
+        if(it + 1 != end(u) && (it + 1)->first == it->first) refused = true;
+        const auto found = std::lower_bound(begin(it->first), end(it->first),
+                                            Target_and_edge(static_cast<Edge_number>(u), 0));
+        if(found != end(it->first) && found->first == u)
+          opposite[it->second] = found->second;
+        else if(border_leaving[u] == no_edge)
+          border_leaving[u] = it->second;
+        else
+          refused = true;
+      }
+    });
+    return !refused;
+  }
+
+  // Whether the triangles around each vertex form one fan: turning from the
+  // border edge (or any edge) leaving it, e to opposite(previous(e)), meets
+  // every edge leaving it.
+  bool one_fan_per_vertex() const
+  {
+    std::atomic<bool> one_fan{true};
+    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(number_of_vertices(), [&](std::size_t v) {
+      if(begin(v) == end(v)) return;
+      const std::size_t corners = static_cast<std::size_t>(end(v) - begin(v));
+      const Edge_number start = border_leaving[v] != no_edge ? border_leaving[v] : begin(v)->second;
+      std::size_t met = 0;
+      for(Edge_number e = start; e != no_edge && met <= corners; e = opposite[previous(e)])
+      {
+        ++met;
+        if(opposite[previous(e)] == start) break;
+      }
+      if(met != corners) one_fan = false;
+    });
+    return one_fan;
+  }
+
+  // The first halfedge into v in the order of the faces (no_edge: v is isolated).
+  Edge_number first_into(std::size_t v) const
+  {
+    Edge_number first = no_edge;
+    for(auto it = begin(v); it != end(v); ++it) first = (std::min)(first, it->second);
+    return first == no_edge ? no_edge : previous(first);
+  }
+};
+
 // The mesh of triangles that form an oriented manifold, built halfedge by
-// halfedge in time linear in the number of triangles: CGAL's add_face() searches the halfedges around a
-// vertex for each face added to it, quadratic in its valence (a fan of
-// valence 100,000 took 10 s). Vertex i = point i, face t = triangle t.
+// halfedge in time linear in the number of triangles, with the independent
+// steps in parallel: CGAL's add_face() searches the halfedges around a vertex
+// for each face added to it, quadratic in its valence (a fan of valence
+// 100,000 took 10 s). Vertex i = point i, face t = triangle t, edges in the
+// order of their first directed edge; each face's halfedge points into its
+// first corner and each vertex's is its border halfedge, or else the first
+// halfedge into it in face order (as CGAL's add_face() would leave them).
 // Returns false, leaving the mesh empty, if a vertex is not manifold (its
 // triangles form more than one fan: then CGAL's orientation duplicates it),
-// or if an edge has more than two triangles or two with the same direction.
-template <typename Mesh>
-bool build_oriented_manifold(const std::vector<P3>& points, const std::vector<Triangle>& triangles, Mesh& mesh)
+// if an edge has more than two triangles or two with the same direction, or
+// if a triangle repeats a vertex. `Points` and `Triangles` are ranges whose
+// elements p[0..2] are coordinates and t[0..2] vertex numbers (std::vectors of
+// P3 and Triangle, or views of numpy arrays).
+template <typename Mesh, typename Points, typename Triangles>
+bool build_oriented_manifold(const Points& points, const Triangles& triangles, Mesh& mesh)
 {
-  typedef typename Mesh::Vertex_index Vertex_index;
   typedef typename Mesh::Halfedge_index Halfedge_index;
   typedef typename Mesh::size_type size_type;
-  const std::size_t directed = 3 * triangles.size();
-  auto source = [&](std::size_t e) { return triangles[e / 3][e % 3]; };
-  auto target = [&](std::size_t e) { return triangles[e / 3][(e + 1) % 3]; };
-  // the directed edges grouped by their undirected edge (bucketed by the
-  // smaller vertex, sorted by the larger): the two halves of an edge are
-  // neighbours, found in one pass over memory in order
-  Vertex_buckets<std::pair<std::size_t, std::size_t> > by_edge(points.size(), [&](const auto& add) {
-    for(std::size_t e = 0; e < directed; ++e)
-      add((std::min)(source(e), target(e)), std::make_pair((std::max)(source(e), target(e)), e));
-  });
-  mesh.reserve(static_cast<size_type>(points.size()), static_cast<size_type>(directed / 2 + 3),
-               static_cast<size_type>(triangles.size()));
-  for(const P3& p : points) mesh.add_vertex(typename Mesh::Point(p[0], p[1], p[2]));
-  std::vector<Halfedge_index> halfedge_of_edge(directed);
-  std::vector<Halfedge_index> border_leaving(points.size()), incoming(points.size());
-  std::vector<std::size_t> corners(points.size(), 0);
-  for(std::size_t e = 0; e < directed; ++e) ++corners[source(e)];
-  bool manifold = true;
-  by_edge.for_each_sorted([&](auto begin, auto end) {
-    for(auto it = begin; it != end && manifold;)
-    {
-      auto last = it + 1;
-      while(last != end && last->first == it->first) ++last;
-      const std::size_t e = it->second;
-      // an edge of three faces, or of two with the same direction: not an oriented manifold
-      if(last - it > 2 || (last - it == 2 && source((it + 1)->second) == source(e))) { manifold = false; break; }
-      const Halfedge_index h = mesh.add_edge();
-      halfedge_of_edge[e] = h;
-      mesh.set_target(h, Vertex_index(static_cast<size_type>(target(e))));
-      mesh.set_target(mesh.opposite(h), Vertex_index(static_cast<size_type>(source(e))));
-      if(last - it == 2)
-        halfedge_of_edge[(it + 1)->second] = mesh.opposite(h);
-      else  // a border halfedge, from target(e) to source(e)
-      {
-        Halfedge_index& b = border_leaving[target(e)];
-        manifold = manifold && b == Halfedge_index();  // two border halfedges leave a pinched vertex
-        b = mesh.opposite(h);
-        incoming[source(e)] = b;
-      }
-      it = last;
-    }
-  });
+  if(points.size() >= no_edge || triangles.size() >= no_edge / 3)
+    throw Mesh_input_error("the mesh is too large for 32-bit indices");
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    if(triangles[t][0] == triangles[t][1] || triangles[t][1] == triangles[t][2] || triangles[t][2] == triangles[t][0])
+      return false;
+  // the vertices and faces are allocated while the edges are paired and checked
+  std::unique_ptr<Directed_edges<Triangles> > edges;
+  bool manifold = false;
+  CGAL::Surface_mesh_direction_fields::internal::parallel_invoke(
+    [&] {
+      edges = std::make_unique<Directed_edges<Triangles> >(points.size(), triangles);
+      manifold = edges->pair_up() && edges->one_fan_per_vertex();
+    },
+    [&] {
+      mesh.reserve(static_cast<size_type>(points.size()), static_cast<size_type>(3 * triangles.size() / 2 + 3),
+                   static_cast<size_type>(triangles.size()));
+      for(std::size_t i = 0; i < points.size(); ++i)
+        mesh.add_vertex(typename Mesh::Point(points[i][0], points[i][1], points[i][2]));
+      for(std::size_t t = 0; t < triangles.size(); ++t) mesh.add_face();
+    });
   if(!manifold)
   {
     mesh.clear();
     return false;
   }
-  for(std::size_t t = 0; t < triangles.size(); ++t)
+  // the halfedge of each directed edge: the first of a pair opens an edge
+  std::vector<Halfedge_index> halfedge_of(edges->leaving.size());
+  size_type next_edge = 0;
+  for(std::size_t e = 0; e < halfedge_of.size(); ++e)
   {
-    const auto f = mesh.add_face();
+    const std::size_t o = edges->opposite[e];
+    if(o == no_edge || e < o) halfedge_of[e] = Halfedge_index(2 * next_edge++);
+    else halfedge_of[e] = Halfedge_index(static_cast<size_type>(halfedge_of[o]) + 1);
+  }
+  for(size_type i = 0; i < next_edge; ++i) mesh.add_edge();
+  link_halfedges(*edges, halfedge_of, mesh);
+  return true;
+}
+
+// Targets, next and faces of the triangles' halfedges and of the border's;
+// the halfedges of faces and vertices.
+template <typename Mesh, typename Triangles>
+void link_halfedges(const Directed_edges<Triangles>& edges, const std::vector<typename Mesh::Halfedge_index>& halfedge_of,
+                    Mesh& mesh)
+{
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Face_index Face_index;
+  typedef typename Mesh::size_type size_type;
+  namespace par = CGAL::Surface_mesh_direction_fields::internal;
+  auto vertex = [](std::size_t v) { return Vertex_index(static_cast<size_type>(v)); };
+  auto border_of = [&](std::size_t e) { return mesh.opposite(halfedge_of[e]); };  // e without opposite
+  par::parallel_for_each_index(edges.triangles.size(), [&](std::size_t t) {
+    const Face_index f(static_cast<size_type>(t));
     for(std::size_t k = 0; k < 3; ++k)
     {
-      const Halfedge_index h = halfedge_of_edge[3 * t + k];
-      mesh.set_face(h, f);
-      mesh.set_next(h, halfedge_of_edge[3 * t + (k + 1) % 3]);
-      if(incoming[target(3 * t + k)] == Halfedge_index()) incoming[target(3 * t + k)] = h;
+      const std::size_t e = 3 * t + k;
+      mesh.set_target(halfedge_of[e], vertex(edges.target(e)));
+      mesh.set_next(halfedge_of[e], halfedge_of[3 * t + (k + 1) % 3]);
+      mesh.set_face(halfedge_of[e], f);
+      if(edges.opposite[e] == no_edge) mesh.set_target(border_of(e), vertex(edges.source(e)));
     }
-    mesh.set_halfedge(f, halfedge_of_edge[3 * t + 2]);  // into the first corner, as CGAL's add_face()
-  }
-  for(std::size_t v = 0; v < points.size() && manifold; ++v)
-  {
-    const Halfedge_index b = border_leaving[v];
-    if(b != Halfedge_index()) mesh.set_next(incoming[v], b);  // incoming[v] is v's border halfedge in
-  }
-  for(std::size_t v = 0; v < points.size() && manifold; ++v)
-  {
-    if(incoming[v] == Halfedge_index()) continue;
-    mesh.set_halfedge(Vertex_index(static_cast<size_type>(v)), incoming[v]);
-    // one fan: turning around v from its halfedge in meets all its corners
-    std::size_t faces = 0;
-    Halfedge_index h = incoming[v];
-    do
+    mesh.set_halfedge(f, halfedge_of[3 * t + 2]);
+  });
+  // the border halfedge of the edge e leaving u goes into u; the one before
+  // it is that of the border edge leaving target(e). Each vertex has one.
+  par::parallel_for_each_index(edges.number_of_vertices(), [&](std::size_t u) {
+    const Edge_number e = edges.border_leaving[u];
+    if(e != no_edge)
     {
-      if(!mesh.is_border(h)) ++faces;
-      h = mesh.opposite(mesh.next(h));
-    } while(h != incoming[v] && faces <= corners[v]);
-    manifold = faces == corners[v];
-  }
-  if(!manifold) mesh.clear();
-  return manifold;
+      mesh.set_next(border_of(edges.border_leaving[edges.target(e)]), border_of(e));
+      mesh.set_halfedge(vertex(u), border_of(e));
+    }
+    else if(edges.first_into(u) != no_edge)
+      mesh.set_halfedge(vertex(u), halfedge_of[edges.first_into(u)]);
+  });
 }
 
 // Step 5 when needed: orientation and non-manifold vertices by CGAL (new
