@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # What one consumer file costs to compile (-O3, as a Release build): a cross
-# field on a CGAL::Surface_mesh through this package, against the same kind
-# of file computing geodesic distances with CGAL's Heat_method_3, compiled
-# in turn (interleaved, REPS times) on this machine. Prints the best time and
-# the peak memory of each and their ratios.
+# field on a CGAL::Surface_mesh through this package, header-only ("cross")
+# and as a program linking CGAL::Surface_mesh_direction_fields_compiled
+# compiles it ("compiled": the engine's definitions left out), against the
+# same kind of file computing geodesic distances with CGAL's Heat_method_3,
+# compiled in turn (interleaved, REPS times) on this machine. Prints the best
+# time and the peak memory of each and their ratios to Heat_method_3.
 #   usage: benchmark/Surface_mesh_direction_fields/compile_cost.sh [REPS]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -39,16 +41,21 @@ flags="-std=c++17 -O3 -DNDEBUG -DCGAL_EIGEN3_ENABLED -I$root/include -isystem /u
        -DCGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD -DCGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS
        -DCGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS"
 for rep in $(seq "$reps"); do
-  for f in heat cross; do
-    /usr/bin/time -f "$f %e %M" -a -o "$work/times" g++ $flags -w -c "$work/$f.cpp" -o "$work/$f.o"
+  for f in heat cross compiled; do
+    source="$work/$f.cpp" extra=""
+    if [ "$f" = compiled ]; then
+      source="$work/cross.cpp" extra="-DCGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION"
+    fi
+    /usr/bin/time -f "$f %e %M" -a -o "$work/times" g++ $flags $extra -w -c "$source" -o "$work/$f.o"
   done
 done
 python3 - "$work/times" <<'PY'
 import sys
 rows = [l.split() for l in open(sys.argv[1])]
 best = {f: (min(float(r[1]) for r in rows if r[0] == f), max(int(r[2]) for r in rows if r[0] == f) / 1024.)
-        for f in ("heat", "cross")}
+        for f in ("heat", "cross", "compiled")}
 for f, (s, mb) in best.items():
-    print("%-6s %6.1f s %7.0f MB   (best time, peak memory over the runs)" % (f, s, mb))
-print("ratio  %6.2f   %7.2f" % (best["cross"][0] / best["heat"][0], best["cross"][1] / best["heat"][1]))
+    print("%-9s %6.1f s %7.0f MB   (best time, peak memory over the runs)" % (f, s, mb))
+for f in ("cross", "compiled"):
+    print("%-9s ratio to heat %5.2f  %5.2f" % (f, best[f][0] / best["heat"][0], best[f][1] / best["heat"][1]))
 PY

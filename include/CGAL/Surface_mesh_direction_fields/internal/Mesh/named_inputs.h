@@ -1,0 +1,184 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/alignment.h>
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+// The named parameters of one field read into a Field_request, by vertex
+// index: the plumbing between the user's property maps and the engine.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+template <typename GeomTraits>
+struct Point_to_array
+{
+  GeomTraits gt;
+  template <typename Point>
+  Vec3 operator()(const Point& p) const
+  {
+    return Vec3{CGAL::to_double(gt.compute_x_3_object()(p)),
+                CGAL::to_double(gt.compute_y_3_object()(p)),
+                CGAL::to_double(gt.compute_z_3_object()(p))};
+  }
+};
+
+inline void check_field_parameters(int degree, double s)
+{
+  if(degree < 1 || degree > maximum_degree)
+    throw Invalid_input_error("the degree n must be from 1 to " + std::to_string(maximum_degree) + " (got " +
+                              std::to_string(degree) + ")");
+  if(!(s >= -1. && s <= 1.))
+    throw Invalid_input_error("the smoothness parameter s must lie in [-1, 1] (got " + compact_number(s) + ")");
+}
+
+// Whether the named parameters ask for a guidance field.
+template <typename NamedParameters>
+bool requests_guidance(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  return choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment),
+                          Principal_curvature_alignment::NONE) != Principal_curvature_alignment::NONE ||
+         !is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value;
+}
+
+template <typename NamedParameters>
+Alignment_request alignment_request(const NamedParameters& np, bool has_guidance)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  Alignment_request r;
+  r.lambda_given = !is_default_parameter<NamedParameters, internal_np::alignment_lambda_t>::value;
+  r.weight_given = !is_default_parameter<NamedParameters, internal_np::alignment_weight_t>::value;
+  r.lambda = choose_parameter(get_parameter(np, internal_np::alignment_lambda), 0.);
+  r.weight = choose_parameter(get_parameter(np, internal_np::alignment_weight), 0.5);
+  r.eigenvalue_bound = choose_parameter(get_parameter(np, internal_np::compute_eigenvalue_bound), false);
+  if(r.lambda_given && r.weight_given)
+    throw Invalid_input_error("give either alignment_lambda or alignment_weight, not both");
+  if(r.lambda_given && !std::isfinite(r.lambda))
+    throw Invalid_input_error("alignment_lambda must be a finite number");
+  if(r.weight_given && !(r.weight > 0. && r.weight < 1.))
+    throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + compact_number(r.weight) + ")");
+  if(r.weight_given && !has_guidance)
+    throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+  return r;
+}
+
+// n, s and the eigen-solve's options.
+template <typename NamedParameters>
+void read_field_parameters(const NamedParameters& np, Field_request& r)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  r.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
+  r.s = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
+  check_field_parameters(r.degree, r.s);
+  r.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
+  r.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
+  r.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  if(!(r.residual_tolerance >= 0.))
+    throw Invalid_input_error("the residual tolerance must be non-negative");
+}
+
+// The guidance: principal curvatures and/or vertex_guidance_map.
+template <typename NamedParameters, typename VertexDescriptor, typename ToArray>
+void read_guidance_request(const NamedParameters& np, const std::vector<VertexDescriptor>& vertex_of_index,
+                           const ToArray& to_array, Field_request& r)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  r.curvature =
+    choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment), Principal_curvature_alignment::NONE);
+  r.curvature_estimate = choose_parameter(get_parameter(np, internal_np::principal_curvature_estimate),
+                                          Principal_curvature_estimate::QUADRIC_FIT);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value)
+  {
+    const auto guidance_map = get_parameter(np, internal_np::vertex_guidance_map);
+    r.has_guidance_map = true;
+    r.guidance.resize(vertex_of_index.size());
+    for(std::size_t i = 0; i < vertex_of_index.size(); ++i)
+    {
+      const Vec3 g = to_array(get(guidance_map, vertex_of_index[i]));
+      if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2]))
+        throw Invalid_input_error("the guidance vector of vertex " + std::to_string(i) + " is not finite");
+      r.guidance[i] = g;
+    }
+  }
+  r.alignment = alignment_request(np, requests_guidance(np));
+}
+
+// The hard constraints: boundary_alignment, vertex_is_constrained_map with
+// vertex_constrained_direction_map, and edge_is_feature_map.
+template <typename TriangleMesh, typename NamedParameters, typename VertexDescriptor, typename IndexOfVertex,
+          typename ToArray>
+void read_constraint_request(const TriangleMesh& tm, const NamedParameters& np,
+                             const std::vector<VertexDescriptor>& vertex_of_index, const IndexOfVertex& index_of,
+                             const ToArray& to_array, Field_request& r)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  r.boundary = choose_parameter(get_parameter(np, internal_np::boundary_alignment), Boundary_alignment::NONE);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_is_constrained_t>::value)
+  {
+    if constexpr(is_default_parameter<NamedParameters, internal_np::vertex_constrained_direction_map_t>::value)
+      throw Invalid_input_error("vertex_is_constrained_map needs vertex_constrained_direction_map");
+    else
+    {
+      const auto is_constrained = get_parameter(np, internal_np::vertex_is_constrained);
+      const auto directions = get_parameter(np, internal_np::vertex_constrained_direction_map);
+      r.has_constraint_map = true;
+      r.constrained.assign(vertex_of_index.size(), 0);
+      r.constrained_direction.assign(vertex_of_index.size(), Vec3{0., 0., 0.});
+      for(std::size_t i = 0; i < vertex_of_index.size(); ++i)
+        if(get(is_constrained, vertex_of_index[i]))
+        {
+          r.constrained[i] = 1;
+          r.constrained_direction[i] = to_array(get(directions, vertex_of_index[i]));
+        }
+    }
+  }
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_feature_t>::value)
+  {
+    const auto is_feature = get_parameter(np, internal_np::edge_is_feature);
+    r.has_feature_map = true;
+    for(auto e : edges(tm))
+      if(get(is_feature, e))
+        r.feature_edges.push_back({index_of(source(halfedge(e, tm), tm)), index_of(target(halfedge(e, tm), tm))});
+  }
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H

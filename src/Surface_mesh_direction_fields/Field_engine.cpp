@@ -1,0 +1,20 @@
+// The compiled engine of the default solver, for programs that link the CMake
+// target CGAL::Surface_mesh_direction_fields_compiled (which defines
+// CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION for them): they then
+// compile only the mesh plumbing of Globally_optimal_direction_field (see the
+// README and the manual, "Compiling Faster").
+#include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine_impl.h>
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+template class Field_engine<Default_direction_field_solver>;
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
