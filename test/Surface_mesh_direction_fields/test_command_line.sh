@@ -350,6 +350,16 @@ dark = sum(1 for i in range(0, len(pixels), 3) if max(pixels[i:i + 3]) < 60)
 assert 0.1 < white / (w * h) < 0.9, white / (w * h)   # a shape on a background
 assert dark > 1000                                     # the field's strokes
 EOF
+fi
+# The same input gives the same digits, also where two factorizations could
+# run side by side (the Hopf estimate's and the aligned system's): three runs.
+if [ -n "$shared" ] && [ -f "$shared/fertility.off" ]; then
+  for run in 1 2 3; do
+    "$bin" "$shared/fertility.off" --degree 4 --align curvature --curvature-estimate hopf \
+      --directions "$out/hopf_$run.txt" > /dev/null
+  done
+  check "--curvature-estimate hopf: three runs, the same directions" \
+    sh -c "cmp -s '$out/hopf_1.txt' '$out/hopf_2.txt' && cmp -s '$out/hopf_1.txt' '$out/hopf_3.txt'"
 else
   echo "SKIPPED shared-mesh checks: ../shared/data/meshes not found"
 fi

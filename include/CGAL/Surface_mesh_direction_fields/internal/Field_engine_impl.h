@@ -406,7 +406,11 @@ private:
   }
 
   // targets.guidance, computed while the factorizations that do not depend
-  // on it run (counted as factorization time).
+  // on it run (counted as factorization time); after them when the guidance
+  // factors a matrix of its own (the Hopf differential's estimate): two
+  // factorizations side by side would make OpenBLAS's number of threads at
+  // the top of each elimination tree, and with it the last digits, depend on
+  // their timing (Single_threaded_blas in dense_kernels.h).
   void read_guidance(const Field_request& request, const std::vector<std::size_t>& early,
                      SparseSolver& linear_solver, Field_targets& targets, Direction_field_timings& timings)
   {
@@ -414,15 +418,24 @@ private:
       targets.guidance = guidance_coefficients(m_mesh, m_tangent_spaces, m_components, request, m_normals,
                                                 linear_solver);
     };
-    if(early.empty())
+    auto factor_early = [&] {
+      for(std::size_t c : early) factor_aligned_system(c, targets.alignment.lambda);
+    };
+    const bool guidance_factors = request.curvature != Principal_curvature_alignment::NONE &&
+                                  request.curvature_estimate == Principal_curvature_estimate::HOPF_DIFFERENTIAL;
+    if(early.empty() || guidance_factors)
     {
       compute_guidance();
-      return;
+      if(early.empty()) return;
     }
     const auto start = Clock::now();
-    parallel_invoke([&] { compute_guidance(); prepare_mass_operator(); }, [&] {
-      for(std::size_t c : early) factor_aligned_system(c, targets.alignment.lambda);
-    });
+    if(guidance_factors)
+    {
+      prepare_mass_operator();
+      factor_early();
+    }
+    else
+      parallel_invoke([&] { compute_guidance(); prepare_mass_operator(); }, factor_early);
     timings.factorization_ms += milliseconds_since(start);
   }
 
