@@ -23,6 +23,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 #endif
 
 // Loops over independent indices: in parallel with TBB when CGAL is linked
@@ -102,6 +103,19 @@ void parallel_for_each_chunk(std::size_t n, const ChunkBody& body)
 // have finished: an exception reaching TBB would cancel the other's nested
 // parallel loops, which then return with part of their iterations not run
 // (out of memory in one used to crash the other on half-built data).
+// f() on this thread, which meanwhile runs only the tasks f() spawns: a
+// thread that holds a lock while its loop runs must not pick up, from
+// outside, work that takes the same lock.
+template <typename F>
+void isolated(const F& f)
+{
+#if defined(CGAL_LINKED_WITH_TBB) && !defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEQUENTIAL)
+  tbb::this_task_arena::isolate(f);
+#else
+  f();
+#endif
+}
+
 template <typename First, typename Second>
 void parallel_invoke(const First& first, const Second& second)
 {

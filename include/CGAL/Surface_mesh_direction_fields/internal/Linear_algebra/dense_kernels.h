@@ -110,6 +110,14 @@ inline bool blas_work_space_available(std::size_t extra_bytes = 0)
 // it, see above; otherwise it does nothing). The scopes of concurrent
 // factorizations are counted: the first saves OpenBLAS's number of threads,
 // the last gives it back.
+// Held by a factorization that calls the BLAS, for its whole length
+// (supernodal_factorization.h): concurrent ones wait for each other.
+inline std::mutex& blas_factorization_lock()
+{
+  static std::mutex m;
+  return m;
+}
+
 class Single_threaded_blas
 {
   static std::mutex& lock()

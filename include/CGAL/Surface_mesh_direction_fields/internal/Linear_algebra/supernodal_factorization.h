@@ -26,6 +26,7 @@
 #include <complex>
 #include <cstddef>
 #include <memory>
+#include <mutex>
 #include <type_traits>
 #include <numeric>
 #include <vector>
@@ -256,29 +257,36 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(), [&work](std::size_t a, std::size_t b) { return work[a] > work[b]; });
 
-  std::atomic<std::ptrdiff_t> failed_column(-1);
-  {
-    std::unique_ptr<Single_threaded_blas> one_thread_each;
-    if(std::is_same<Subtree_kernels, Dense_kernels<typename Scalar::value_type> >::value)
-      one_thread_each = std::make_unique<Single_threaded_blas>();
-    parallel_for_each_task(tasks.size(), [&](std::size_t i) {
-      const Supernodal_solve_plan::Task& task = tasks[order[i]];
-      Supernode_workspace<Index, Scalar> workspace(L.n);
-      for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0; ++s)
-      {
-        const std::ptrdiff_t column = factor_supernode<Subtree_kernels>(L, values, lower, updates, s, workspace);
-        if(column >= 0) failed_column.store(column);
-      }
-    });
-  }
-  if(failed_column.load() >= 0) return failed_column.load();
-  Supernode_workspace<Index, Scalar> workspace(L.n);
-  for(std::size_t s : plan.top())
-  {
-    const std::ptrdiff_t column = factor_supernode<Top_kernels>(L, values, lower, updates, s, workspace);
-    if(column >= 0) return column;
-  }
-  return -1;
+  // One factorization with the BLAS at a time in the process: OpenBLAS's
+  // number of threads is process-wide, and the top of this tree must find the
+  // number it had before any subtree phase (Single_threaded_blas), so that
+  // the digits do not depend on what else runs. The loops run isolated: a
+  // thread waiting for them must not start another factorization meanwhile.
+  std::unique_lock<std::mutex> exclusive(blas_factorization_lock(), std::defer_lock);
+  if(std::is_same<Top_kernels, Dense_kernels<typename Scalar::value_type> >::value) exclusive.lock();
+  std::ptrdiff_t failed = -1;
+  isolated([&] {
+    std::atomic<std::ptrdiff_t> failed_column(-1);
+    {
+      std::unique_ptr<Single_threaded_blas> one_thread_each;
+      if(std::is_same<Subtree_kernels, Dense_kernels<typename Scalar::value_type> >::value)
+        one_thread_each = std::make_unique<Single_threaded_blas>();
+      parallel_for_each_task(tasks.size(), [&](std::size_t i) {
+        const Supernodal_solve_plan::Task& task = tasks[order[i]];
+        Supernode_workspace<Index, Scalar> workspace(L.n);
+        for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0; ++s)
+        {
+          const std::ptrdiff_t column = factor_supernode<Subtree_kernels>(L, values, lower, updates, s, workspace);
+          if(column >= 0) failed_column.store(column);
+        }
+      });
+    }
+    failed = failed_column.load();
+    Supernode_workspace<Index, Scalar> workspace(L.n);
+    for(auto s = plan.top().begin(); s != plan.top().end() && failed < 0; ++s)
+      failed = factor_supernode<Top_kernels>(L, values, lower, updates, *s, workspace);
+  });
+  return failed;
 }
 
 // The same with the kernels of dense_kernels.h: the BLAS at the top and, where
