@@ -178,6 +178,34 @@ def test_two_threads_give_the_same_results():
     assert all(np.array_equal(a, b) for a, b in zip(alone, together))
 
 
+CONCURRENT = """
+import sys, threading, numpy as np
+import surface_mesh_direction_fields as smdf
+meshes = [smdf.read_mesh(path)[:2] for path in sys.argv[1:]]
+alone = [smdf.compute_globally_optimal_directions(V, F, degree=4, align="curvature").directions for V, F in meshes]
+for trial in range(2):
+    out = [None] * len(meshes)
+    def work(i):
+        out[i] = smdf.compute_globally_optimal_directions(*meshes[i], degree=4, align="curvature").directions
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(meshes))]
+    for t in threads: t.start()
+    for t in threads: t.join()
+    assert all(np.array_equal(a, b) for a, b in zip(alone, out)), "trial %d differs" % trial
+"""
+
+
+def test_two_threads_with_blas_threads_give_the_same_digits(shared):
+    # OpenBLAS with its own threads (the test suite otherwise runs it on one):
+    # its thread count is process-wide, so concurrent factorizations must not
+    # change each other's (meshes large enough for OpenBLAS to use threads)
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+    paths = [os.path.join(shared, name) for name in ("nefertiti.off", "fertility.off")]
+    if not all(os.path.exists(p) for p in paths):
+        pytest.skip("nefertiti.off or fertility.off missing")
+    r = subprocess.run([sys.executable, "-c", CONCURRENT] + paths, env=env, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr[-2000:]
+
+
 V0, F0 = octahedron()
 BAD = [
     (np.zeros((0, 3)), F0, ValueError), (V0, np.zeros((0, 3), dtype=np.int64), ValueError),
