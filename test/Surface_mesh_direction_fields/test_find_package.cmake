@@ -5,8 +5,9 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/pre
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "install failed")
 endif()
+# the consumer names the CGAL of the package's build (5.5 or 6.x) as its users would
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -DCMAKE_PREFIX_PATH=${WORK}/prefix
-                        -DCMAKE_BUILD_TYPE=Release RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+                        -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR=${CGAL_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "configuring the consumer failed:\n${out}\n${err}")
 endif()
@@ -19,6 +20,10 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the consumer failed: ${out}")
 endif()
 message(STATUS "find_package consumer: ${out}")
+# the consumer compiled against the CGAL of the package's build
+if(EXPECTED_CGAL_VERSION AND NOT out MATCHES "^CGAL ${EXPECTED_CGAL_VERSION}:")
+  message(FATAL_ERROR "the consumer was built against another CGAL than ${EXPECTED_CGAL_VERSION}: ${out}")
+endif()
 # the same program against the compiled engine: the same fields, bit for bit
 if(EXISTS ${WORK}/build/consumer_compiled)
   execute_process(COMMAND ${WORK}/build/consumer_compiled RESULT_VARIABLE rc OUTPUT_VARIABLE compiled_out)

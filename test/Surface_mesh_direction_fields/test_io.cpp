@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
 #include <CGAL/Surface_mesh_direction_fields/streamlines.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
 
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -127,15 +128,15 @@ static void check_round_trips(Test_report& report, const std::string& name, cons
     const bool read = CGAL::IO::read_PLY(is, read_mesh);
     bool same = read && read_mesh.number_of_vertices() == mesh.number_of_vertices() &&
                 read_mesh.number_of_faces() == mesh.number_of_faces();
-    auto dx = read_mesh.property_map<Vertex_index, double>("v:dx");
-    auto dy = read_mesh.property_map<Vertex_index, double>("v:dy");
-    auto dz = read_mesh.property_map<Vertex_index, double>("v:dz");
-    same = same && dx.second && dy.second && dz.second;
+    const auto dx = SMDF::internal::find_property_map<Vertex_index, double>(read_mesh, "v:dx");
+    const auto dy = SMDF::internal::find_property_map<Vertex_index, double>(read_mesh, "v:dy");
+    const auto dz = SMDF::internal::find_property_map<Vertex_index, double>(read_mesh, "v:dz");
+    same = same && dx && dy && dz;
     if(same)
       for(Vertex_index v : read_mesh.vertices())
       {
         const auto& d = data.directions[std::size_t(v)][0];
-        same = same && dx.first[v] == d[0] && dy.first[v] == d[1] && dz.first[v] == d[2];
+        same = same && (*dx)[v] == d[0] && (*dy)[v] == d[1] && (*dz)[v] == d[2];
       }
     report.check(same, what + ": CGAL::IO::read_PLY reads the mesh and the direction properties v:dx, v:dy, v:dz");
   }

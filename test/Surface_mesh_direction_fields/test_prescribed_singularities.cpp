@@ -21,6 +21,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
 
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -86,7 +87,7 @@ struct Outcome
 static Outcome prescribe(const Mesh& mesh, int n, const Prescription& p)
 {
   Outcome o;
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   std::vector<std::pair<Face_index, int> > found;
   try
   {
@@ -172,7 +173,7 @@ static void check_spheres(Test_report& report)
   check_exact(report, "sphere n=4, ten +1/4 and two -1/4", mesh, 4, mixed);
   // the field is a unit tangent field at every vertex (tangent to the
   // package's vertex normal, within 1e-2 of the sphere's)
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   double worst_length = 0., worst_normal = 0.;
   for(Vertex_index v : mesh.vertices())
   {
@@ -334,7 +335,7 @@ static void check_errors(Test_report& report)
                                                                       {nearest_face(mesh, Point_3(0, 0, -1)), -1}}),
                "crowded singularities: exact or refused, never a wrong field (" + o.error + ")");
 
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   const Prescription eight = at_points(mesh, cube_corners(), 1);
   auto refused = [&](auto np, const std::string& what) {
     try
@@ -358,7 +359,7 @@ static void check_editing(Test_report& report)
 {
   const Mesh mesh = sphere(4);
   Prescription p = at_points(mesh, cube_corners(), 1);
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
   field.compute(dir, params::degree(4).prescribed_singularities(p));
   // move the first singularity to a neighbouring face
@@ -393,7 +394,7 @@ static void check_rotation(Test_report& report)
 {
   const Mesh mesh = sphere(3);
   const Prescription eight = at_points(mesh, cube_corners(), 1);
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   std::map<Vertex_index, bool> constrained;
   std::map<Vertex_index, Vector_3> wanted;
   // the message of the error the prescribed field with these constraints throws ("" if none)
@@ -533,14 +534,14 @@ static void check_scale_invariance(Test_report& report)
 {
   Mesh mesh = sphere(3);
   const Prescription p = at_points(mesh, cube_corners(), 1);
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   SMDF::compute_globally_optimal_directions(mesh, dir, params::degree(4).prescribed_singularities(p));
   std::vector<Vector_3> unscaled(dir.begin(), dir.end());
   for(double factor : {1e-3, 1e3})
   {
     Mesh scaled = mesh;
     for(Vertex_index v : scaled.vertices()) scaled.point(v) = CGAL::ORIGIN + factor * (mesh.point(v) - CGAL::ORIGIN);
-    auto sdir = scaled.property_map<Vertex_index, Vector_3>("v:direction").first;
+    auto sdir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(scaled, "v:direction").value();
     SMDF::compute_globally_optimal_directions(scaled, sdir, params::degree(4).prescribed_singularities(p));
     double worst = 0.;
     std::size_t i = 0;
@@ -566,7 +567,7 @@ static double field_turns_along(const Mesh& mesh, int n, const std::vector<Mesh:
   const I::Tangent_spaces ts = I::compute_tangent_spaces(m, 1e-6);
   const I::Connection con = I::compute_connection(m, ts, n);
   const std::vector<I::Vec3> normals = I::angle_weighted_vertex_normals(m, ts);
-  auto dir = mesh.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(mesh, "v:direction").value();
   auto angle_at = [&](Vertex_index v) {
     const Vector_3 d = dir[v];
     return std::arg(I::tangent_coefficient(m, ts, std::size_t(v), I::Vec3{d.x(), d.y(), d.z()}, n, normals[std::size_t(v)]));
@@ -591,7 +592,7 @@ static void check_loop_turns(Test_report& report)
   Mesh torus;
   make_torus(torus, 1., 0.4, 48, 20);
   torus = with_direction_map(torus);
-  auto dir = torus.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(torus, "v:direction").value();
   SMDF::Globally_optimal_direction_field<Mesh> field(torus);
   const auto loops = field.prescription_loops();
   report.check(loops.size() == 2 && closed_loop(torus, loops[0]) && closed_loop(torus, loops[1]),
@@ -614,7 +615,7 @@ static void check_loop_turns(Test_report& report)
   Mesh disk;
   make_disk(disk, 12);
   disk = with_direction_map(disk);
-  auto ddir = disk.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto ddir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(disk, "v:direction").value();
   SMDF::Globally_optimal_direction_field<Mesh> disk_field(disk);
   report.check(disk_field.prescription_loops().size() == 1 && closed_loop(disk, disk_field.prescription_loops()[0]),
                "disk: one boundary loop, closed");
@@ -637,7 +638,7 @@ static void check_loop_turns(Test_report& report)
   cylinder = with_direction_map(cylinder);
   SMDF::Globally_optimal_direction_field<Mesh> cylinder_field(cylinder);
   const auto rims = cylinder_field.prescription_loops();
-  auto cdir = cylinder.property_map<Vertex_index, Vector_3>("v:direction").first;
+  auto cdir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(cylinder, "v:direction").value();
   std::vector<std::pair<Face_index, int> > found;
   // the rims have the same length: the first is free; turning the second once turns the first back
   std::vector<std::pair<std::size_t, int> > twist = {{1, 1}, {0, -1}};

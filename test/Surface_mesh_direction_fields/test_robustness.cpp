@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
 
 #include "field_checks.h"
 #include "generated_meshes.h"
@@ -305,7 +306,7 @@ static void check_hard_meshes(Test_report& report)
     const std::string message = refusal_of(m);
     report.check(message.find("collect_garbage()") != std::string::npos, "removed faces not collected: " + message);
     m.collect_garbage();
-    auto collected = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    auto collected = SMDF::internal::find_property_map<Vertex_index, Vector_3>(m, "v:direction").value();
     const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(m, collected, CGAL::parameters::degree(4));
     report.check(r.components.size() == 1 && !r.components[0].is_closed, "after collect_garbage(): computed");
   }
@@ -368,11 +369,11 @@ static void check_any_scale(Test_report& report)
   make_lumpy_sphere(base, 3);
   Singular base_singular;
   const SMDF::Direction_field_result unscaled = solve(base, base_singular);
-  const auto base_dir = base.property_map<Vertex_index, Vector_3>("v:direction").first;
+  const auto base_dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(base, "v:direction").value();
   for(double factor : {1e-310, 1e-300, 1e-150, 1e-80, 1e80, 1e150, 1e300})
   {
     Mesh m = base;
-    auto old_dir = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    auto old_dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(m, "v:direction").value();
     m.remove_property_map(old_dir);
     for(Vertex_index v : m.vertices()) m.point(v) = CGAL::ORIGIN + factor * (base.point(v) - CGAL::ORIGIN);
     Singular singular;
@@ -383,7 +384,7 @@ static void check_any_scale(Test_report& report)
     const std::string name = "scaled by " + std::to_string(factor);
     if(!report.check(error.empty(), name + ": computed (" + error + ")")) continue;
     report.check(singular == base_singular, name + ": the same singular faces");
-    const auto dir = m.property_map<Vertex_index, Vector_3>("v:direction").first;
+    const auto dir = SMDF::internal::find_property_map<Vertex_index, Vector_3>(m, "v:direction").value();
     double worst = 0.;
     for(Vertex_index v : m.vertices()) worst = (std::max)(worst, std::sqrt((dir[v] - base_dir[v]).squared_length()));
     report.check(worst < 1e-6, name + ": the same directions (" + std::to_string(worst) + ")");

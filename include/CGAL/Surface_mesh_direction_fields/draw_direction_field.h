@@ -32,8 +32,9 @@ as short segments (0.4 times the mean edge length); singular faces are red
 (positive index) or blue (negative index), the others grey.
 
 Available when the macro `CGAL_USE_BASIC_VIEWER` is defined: link with the CMake
-target `CGAL::CGAL_Basic_viewer` (Debian's `libcgal-qt5-dev`). When the
-environment variable `CGAL_TEST_SUITE` is set, nothing is shown.
+target `CGAL::CGAL_Basic_viewer` (with CGAL 5.5, Qt5: Debian's `libcgal-qt5-dev`;
+with CGAL 6, Qt6: Debian's `qt6-base-dev`). When the environment variable
+`CGAL_TEST_SUITE` is set, nothing is shown.
 
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam VertexDirectionMap a `ReadablePropertyMap` from vertices to a 3D vector type
@@ -69,9 +70,22 @@ void draw_direction_field(const Direction_field_data& data, const std::vector<St
 
 #ifdef CGAL_USE_BASIC_VIEWER
 
+#include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
+
+#if CGAL_SURFACE_MESH_DIRECTION_FIELDS_CGAL_6
+// CGAL 6.0 guards its Qt viewer by CGAL_USE_BASIC_VIEWER, 6.1 by CGAL_USE_BASIC_VIEWER_QT
+#ifndef CGAL_USE_BASIC_VIEWER_QT
+#define CGAL_USE_BASIC_VIEWER_QT 1
+#endif
+#include <CGAL/Graphics_scene.h>
+#include <CGAL/Qt/Basic_viewer.h>
+#else
 #include <CGAL/Qt/Basic_viewer_qt.h>
+#endif
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Qt/init_ogl_context.h>
 
+#include <QApplication>
 #include <QKeyEvent>
 
 #include <cmath>
@@ -81,19 +95,123 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// What the viewer shows, added to `scene`: CGAL 5's viewer itself or CGAL 6's
+// Graphics_scene (the same face_begin / add_point_in_face / face_end /
+// add_segment calls in both).
+template <typename Scene>
+class Direction_field_scene_builder
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+  Scene& m_scene;
+
+  static Point point(const std::array<double, 3>& p) { return Point(p[0], p[1], p[2]); }
+
+public:
+  explicit Direction_field_scene_builder(Scene& scene) : m_scene(scene) {}
+
+  void add(const Direction_field_data& data, const std::vector<Streamline>& lines)
+  {
+    const double glyph = add_faces(data);
+    const bool signed_directions = data.degree % 2 == 1;  // odd n: arrowheads show which way
+    for(std::size_t v = 0; v < data.directions.size(); ++v)
+      for(const auto& d : data.directions[v])
+      {
+        if(internal::dot(d, d) == 0.) continue;
+        const internal::Vec3& p = data.points[v];
+        const internal::Vec3 tip = p + glyph * d;
+        m_scene.add_segment(point(p), point(tip), CGAL::IO::Color(20, 20, 20));
+        if(signed_directions && v < data.normals.size())
+          add_arrowhead(tip, d, data.normals[v], 0.3 * glyph, CGAL::IO::Color(20, 20, 20));
+      }
+    for(const Streamline& l : lines) add_line(data, l, signed_directions, glyph);
+  }
+
+private:
+  // The faces, coloured by their index; returns the glyphs' length.
+  double add_faces(const Direction_field_data& data)
+  {
+    std::vector<int> index(data.faces.size(), 0);
+    for(const auto& s : data.singularities) index[s.first] = s.second;
+    double edge_sum = 0.;
+    for(std::size_t f = 0; f < data.faces.size(); ++f)
+    {
+      const auto& t = data.faces[f];
+      const CGAL::IO::Color color = index[f] > 0 ? CGAL::IO::Color(230, 40, 40)
+                                  : index[f] < 0 ? CGAL::IO::Color(40, 80, 230) : CGAL::IO::Color(200, 205, 215);
+      m_scene.face_begin(color);
+      for(std::size_t v : t) m_scene.add_point_in_face(point(data.points[v]));
+      m_scene.face_end();
+      for(int c = 0; c < 3; ++c) edge_sum += internal::norm(data.points[t[(c + 1) % 3]] - data.points[t[c]]);
+    }
+    return data.faces.empty() ? 0. : 0.4 * edge_sum / (3. * data.faces.size());
+  }
+
+  void add_line(const Direction_field_data& data, const Streamline& l, bool signed_directions, double glyph)
+  {
+    const CGAL::IO::Color color(20, 90, 100);
+    for(std::size_t i = 0; i + 1 < l.points.size(); ++i)
+    {
+      m_scene.add_segment(point(l.points[i]), point(l.points[i + 1]), color);
+      if(!signed_directions || i % 8 != 4 || i >= l.faces.size()) continue;  // every few faces along the line
+      const internal::Vec3 e = l.points[i + 1] - l.points[i];
+      const auto& t = data.faces[l.faces[i]];
+      const internal::Vec3 normal =
+        internal::cross(data.points[t[1]] - data.points[t[0]], data.points[t[2]] - data.points[t[0]]);
+      if(internal::norm(e) > 0. && internal::norm(normal) > 0.)
+        add_arrowhead(l.points[i + 1], internal::normalized(e), internal::normalized(normal), 1.2 * glyph, color);
+    }
+  }
+
+  // Two short strokes back from `tip`, on either side of the unit direction
+  // d in the plane of the unit normal.
+  void add_arrowhead(const internal::Vec3& tip, const internal::Vec3& d, const internal::Vec3& normal, double size,
+                     const CGAL::IO::Color& color)
+  {
+    const internal::Vec3 side = internal::cross(normal, d);
+    m_scene.add_segment(point(tip), point(tip + (-size) * d + (0.6 * size) * side), color);
+    m_scene.add_segment(point(tip), point(tip + (-size) * d + (-0.6 * size) * side), color);
+  }
+};
+
+#if CGAL_SURFACE_MESH_DIRECTION_FIELDS_CGAL_6
+
+// CGAL 6: the viewer shows a Graphics_scene it keeps by reference, so the
+// scene is a base constructed (and filled) before the viewer.
+struct Direction_field_scene
+{
+  CGAL::Graphics_scene scene;
+  Direction_field_scene(const Direction_field_data& data, const std::vector<Streamline>& lines)
+  {
+    Direction_field_scene_builder<CGAL::Graphics_scene>(scene).add(data, lines);
+  }
+};
+
+class Direction_field_viewer : private Direction_field_scene, public CGAL::Qt::Basic_viewer
+{
+  typedef CGAL::Qt::Basic_viewer Base;
+
+public:
+  Direction_field_viewer(QWidget* parent, const Direction_field_data& data, const std::vector<Streamline>& lines,
+                         const char* title)
+    : Direction_field_scene(data, lines), Base(parent, scene, title, false, true, true, false, false)
+  {}
+
+#else
+
+// CGAL 5: the viewer is its own scene.
 class Direction_field_viewer : public CGAL::Basic_viewer_qt
 {
   typedef CGAL::Basic_viewer_qt Base;
-  const Direction_field_data& m_data;
-  const std::vector<Streamline>& m_lines;
 
 public:
-  Direction_field_viewer(QWidget* parent, const Direction_field_data& data,
-                         const std::vector<Streamline>& lines, const char* title)
-    : Base(parent, title, false, true, true, false, false), m_data(data), m_lines(lines)
+  Direction_field_viewer(QWidget* parent, const Direction_field_data& data, const std::vector<Streamline>& lines,
+                         const char* title)
+    : Base(parent, title, false, true, true, false, false)
   {
-    compute_elements();
+    Direction_field_scene_builder<Base>(*this).add(data, lines);
   }
+
+#endif
 
 protected:
   // Escape closes the window too (CGAL's viewer closes on Ctrl+Q only).
@@ -105,67 +223,6 @@ protected:
       return;
     }
     Base::keyPressEvent(e);
-  }
-
-private:
-  static Local_point point(const std::array<double, 3>& p) { return Local_point(p[0], p[1], p[2]); }
-
-  void compute_elements()
-  {
-    clear();
-    std::vector<int> index(m_data.faces.size(), 0);
-    for(const auto& s : m_data.singularities) index[s.first] = s.second;
-    double edge_sum = 0.;
-    for(std::size_t f = 0; f < m_data.faces.size(); ++f)
-    {
-      const auto& t = m_data.faces[f];
-      const CGAL::IO::Color color = index[f] > 0 ? CGAL::IO::Color(230, 40, 40)
-                                  : index[f] < 0 ? CGAL::IO::Color(40, 80, 230) : CGAL::IO::Color(200, 205, 215);
-      face_begin(color);
-      for(std::size_t v : t) add_point_in_face(point(m_data.points[v]));
-      face_end();
-      for(int c = 0; c < 3; ++c)
-      {
-        edge_sum += internal::norm(m_data.points[t[(c + 1) % 3]] - m_data.points[t[c]]);
-      }
-    }
-    const double glyph = m_data.faces.empty() ? 0. : 0.4 * edge_sum / (3. * m_data.faces.size());
-    const bool signed_directions = m_data.degree % 2 == 1;  // odd n: arrowheads show which way
-    for(std::size_t v = 0; v < m_data.directions.size(); ++v)
-      for(const auto& d : m_data.directions[v])
-      {
-        if(internal::dot(d, d) == 0.) continue;
-        const internal::Vec3& p = m_data.points[v];
-        const internal::Vec3 tip = p + glyph * d;
-        add_segment(point(p), point(tip), CGAL::IO::Color(20, 20, 20));
-        if(signed_directions && v < m_data.normals.size())
-          add_arrowhead(tip, d, m_data.normals[v], 0.3 * glyph, CGAL::IO::Color(20, 20, 20));
-      }
-    for(const Streamline& l : m_lines)
-      for(std::size_t i = 0; i + 1 < l.points.size(); ++i)
-      {
-        add_segment(point(l.points[i]), point(l.points[i + 1]), CGAL::IO::Color(20, 90, 100));
-        if(signed_directions && i % 8 == 4 && i < l.faces.size())  // every few faces along the line
-        {
-          const internal::Vec3 e = l.points[i + 1] - l.points[i];
-          const auto& t = m_data.faces[l.faces[i]];
-          const internal::Vec3 normal =
-            internal::cross(m_data.points[t[1]] - m_data.points[t[0]], m_data.points[t[2]] - m_data.points[t[0]]);
-          if(internal::norm(e) > 0. && internal::norm(normal) > 0.)
-            add_arrowhead(l.points[i + 1], internal::normalized(e), internal::normalized(normal), 1.2 * glyph,
-                          CGAL::IO::Color(20, 90, 100));
-        }
-      }
-  }
-
-  // Two short strokes back from `tip`, on either side of the unit direction
-  // d in the plane of the unit normal.
-  void add_arrowhead(const internal::Vec3& tip, const internal::Vec3& d, const internal::Vec3& normal, double size,
-                     const CGAL::IO::Color& color)
-  {
-    const internal::Vec3 side = internal::cross(normal, d);
-    add_segment(point(tip), point(tip + (-size) * d + (0.6 * size) * side), color);
-    add_segment(point(tip), point(tip + (-size) * d + (-0.6 * size) * side), color);
   }
 };
 

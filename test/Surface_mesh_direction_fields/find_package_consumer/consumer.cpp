@@ -5,6 +5,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/version.h>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -68,7 +69,7 @@ int main()
   const auto r2 = field.compute(dir, CGAL::parameters::degree(2)
                                        .principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM)
                                        .alignment_weight(0.5));
-  std::cout << "index sums " << r1.index_sum << " " << r4.index_sum << " " << r2.index_sum << ", digests " << std::hex
+  std::cout << "CGAL " << CGAL_VERSION_STR << ": index sums " << r1.index_sum << " " << r4.index_sum << " " << r2.index_sum << ", digests " << std::hex
             << digest(tet, tet_dir) << " " << cross << " " << digest(torus, dir) << std::endl;
   return r1.index_sum == 2 && r4.index_sum == 0 && r2.index_sum == 0 ? 0 : 1;
 }
