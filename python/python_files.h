@@ -9,8 +9,8 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
 
-#include <cstdio>
-#include <fstream>
+#include "output_files.h"
+
 #include <functional>
 
 namespace {
@@ -25,7 +25,7 @@ struct File_error : std::runtime_error { using std::runtime_error::runtime_error
 SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, const Result& result)
 {
   Mesh mesh = make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
-                        option_as<Index_array>(F, "F", "an array of integers of shape (number of faces, 3)"));
+                        integer_array(F, "F"));
   const auto d = result.directions.unchecked<2>();
   const auto m = result.magnitudes.unchecked<1>();
   const auto s = result.singular_faces.unchecked<2>();
@@ -50,34 +50,21 @@ SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, 
                                          CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(magnitudes)));
 }
 
-// Writes through `write` into path's temporary sibling, then renames it.
+// Writes through `write` as the program writes its outputs (output_files.h):
+// a regular file under a unique temporary name renamed when complete (no
+// partial file on any failure), a device or a pipe written directly, a
+// symbolic link written through; the process's signal handlers untouched.
 void write_file(const std::string& path, const std::function<void(std::ostream&)>& write)
 {
   if(path.empty()) refuse_file("the file name is empty");
-  const std::string partial = path + ".partial";
+  try
   {
-    std::ofstream out(partial, std::ios::binary);
-    if(!out) refuse_file("cannot write '" + path + "'");
-    try { write(out); }
-    catch(...)  // refused by the writer: no file left
-    {
-      out.close();
-      std::remove(partial.c_str());
-      throw;
-    }
-    out.flush();
-    if(!out)
-    {
-      out.close();
-      std::remove(partial.c_str());
-      refuse_file("writing '" + path + "' failed (disk full?)");
-    }
+    Output_files files(false);
+    files.add("path", path, Input_files());
+    write(files.stream(path));
+    files.commit();
   }
-  if(std::rename(partial.c_str(), path.c_str()) != 0)
-  {
-    std::remove(partial.c_str());
-    refuse_file("cannot write '" + path + "'");
-  }
+  catch(const Output_error& e) { refuse_file(e.what()); }
 }
 
 // .vtu by the name (any case), as the program chooses
@@ -112,7 +99,9 @@ void bind_files(py::module_& m)
   for(const auto& w : writers)
   {
     const Writer writer = w.second;
-    m.def(w.first, [writer](const std::string& path, const py::object& V, const py::object& F, const Result& result) {
+    m.def(w.first, [writer](const py::object& path_object, const py::object& V, const py::object& F,
+                            const Result& result) {
+            const std::string path = path_argument(path_object);
             const SMDF::Direction_field_data data = field_data(V, F, result);
             py::gil_scoped_release release;
             write_file(path, [&](std::ostream& os) { writer(os, data, path); });

@@ -38,12 +38,44 @@ Float_array rows_of_three(const py::object& value, std::size_t rows, const char*
   return a;
 }
 
+// An array of integers (numpy integers, or floats that are whole numbers):
+// 0.9 is refused, as the program refuses it, rather than truncated to 0.
+Index_array integer_array(const py::object& value, const char* name)
+{
+  py::array a;
+  try { a = py::module_::import("numpy").attr("asarray")(value); }
+  catch(const py::error_already_set&) { throw py::type_error(std::string(name) + " must be an array of integers"); }
+  const char kind = a.dtype().kind();
+  if(kind == 'f')
+  {
+    const Float_array f = option_as<Float_array>(a, name, "an array of integers");
+    const double* x = f.data();
+    for(py::ssize_t i = 0; i < f.size(); ++i)
+      if(!(std::isfinite(x[i]) && std::floor(x[i]) == x[i] && std::abs(x[i]) < 9.0e15))
+        refuse(std::string(name) + " must hold integers, got " + SMDF::internal::compact_number(x[i]));
+  }
+  else if(kind != 'i' && kind != 'u')
+    throw py::type_error(std::string(name) + " must be an array of integers");
+  return option_as<Index_array>(a, name, "an array of integers");
+}
+
 Index_array index_rows(const py::object& value, py::ssize_t columns, const char* name)
 {
-  const Index_array a = option_as<Index_array>(value, name, "an array of integers");
+  const Index_array a = integer_array(value, name);
   if(a.ndim() != 2 || a.shape(1) != columns)
     refuse(std::string(name) + " must be an array of shape (k, " + std::to_string(columns) + ")");
   return a;
+}
+
+// A count (iterations, seed): a Python integer in [0, 2^32 - 1], never wrapped.
+unsigned int count_option(const py::handle& value, const char* name)
+{
+  const std::string what = std::string("an integer from 0 to 4294967295");
+  if(!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+    throw py::type_error(std::string(name) + " must be " + what);
+  const py::int_ i = py::reinterpret_borrow<py::int_>(value);
+  if(i < py::int_(0) || i > py::int_(4294967295ULL)) refuse(std::string(name) + " must be " + what);
+  return py::cast<unsigned int>(i);
 }
 
 // constraints = (vertex ids, directions k x 3)
@@ -51,17 +83,22 @@ void read_constraints(const py::object& value, const Mesh& mesh, Options& o)
 {
   const py::tuple pair = option_as<py::tuple>(value, "constraints", "a pair (vertex ids, directions)");
   if(pair.size() != 2) refuse("constraints must be a pair (vertex ids, directions of shape (k, 3))");
-  const Index_array ids = option_as<Index_array>(pair[0], "constraints' vertex ids", "an array of integers");
+  const Index_array ids = integer_array(pair[0], "constraints' vertex ids");
   if(ids.ndim() != 1) refuse("constraints: the vertex ids must be a 1-dimensional array");
   const Float_array d = rows_of_three(pair[1], static_cast<std::size_t>(ids.shape(0)), "constraints' directions");
   const auto id = ids.unchecked<1>();
   const auto dir = d.unchecked<2>();
+  std::vector<bool> listed(mesh.number_of_vertices(), false);
   for(py::ssize_t i = 0; i < ids.shape(0); ++i)
   {
     if(id(i) < 0 || static_cast<std::size_t>(id(i)) >= mesh.number_of_vertices())
       refuse("constraints: vertex " + std::to_string(id(i)) + " is not a vertex of the mesh");
-    o.constraints.emplace_back(Vertex_index(static_cast<Mesh::size_type>(id(i))),
-                               Kernel::Vector_3(dir(i, 0), dir(i, 1), dir(i, 2)));
+    const Vertex_index v(static_cast<Mesh::size_type>(id(i)));
+    if(listed[std::size_t(v)]) refuse("constraints: vertex " + std::to_string(id(i)) + " is listed twice");
+    if(mesh.is_isolated(v))
+      refuse("constraints: vertex " + std::to_string(id(i)) + " belongs to no face (it has no tangent plane)");
+    listed[std::size_t(v)] = true;
+    o.constraints.emplace_back(v, Kernel::Vector_3(dir(i, 0), dir(i, 1), dir(i, 2)));
   }
 }
 
@@ -152,9 +189,12 @@ Options read_options(const py::dict& kw, Mesh& mesh)
     o.feature_angle = angle;
   }
   if(given("prescribed")) read_prescribed(kw["prescribed"], mesh, o);
-  if(kw.contains("max_iterations")) o.max_iterations = option_as<std::size_t>(kw["max_iterations"], "max_iterations", "a positive integer");
+  if(kw.contains("max_iterations")) o.max_iterations = count_option(kw["max_iterations"], "max_iterations");
   if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
-  if(kw.contains("seed")) o.seed = option_as<unsigned int>(kw["seed"], "seed", "a non-negative integer");
+  if(kw.contains("seed")) o.seed = count_option(kw["seed"], "seed");
+  if((o.lambda_t || o.alignment_weight) && o.align == SMDF::Principal_curvature_alignment::NONE && o.guidance.empty())
+    refuse(std::string(o.lambda_t ? "lambda_t" : "alignment_weight") +
+           " needs something to align to (align or guidance)");
   return o;
 }
 

@@ -14,23 +14,40 @@ struct Result
   SMDF::Direction_field_result report;
 };
 
-// The arrays of one computed field, taken from the mesh's maps (with the GIL held).
-Result make_result(const Mesh& mesh, const Maps& maps, const std::vector<std::pair<Face_index, int> >& singular,
-                   SMDF::Direction_field_result report)
+// The values of one computed field, copied from the mesh's maps while the
+// object's lock is held (no GIL needed): a later call on the same object
+// cannot overwrite them before they become arrays.
+struct Field_values
 {
-  Result r;
-  const py::ssize_t nv = static_cast<py::ssize_t>(mesh.number_of_vertices());
-  r.directions = py::array_t<double>({nv, py::ssize_t(3)});
-  r.magnitudes = py::array_t<double>(nv);
-  auto d = r.directions.mutable_unchecked<2>();
-  auto m = r.magnitudes.mutable_unchecked<1>();
+  std::vector<double> directions, magnitudes;  // 3 and 1 per vertex
+  std::vector<std::pair<Face_index, int> > singular;
+  SMDF::Direction_field_result report;
+};
+
+Field_values copy_field(const Mesh& mesh, const Maps& maps)
+{
+  Field_values values;
+  values.directions.reserve(3 * mesh.number_of_vertices());
+  values.magnitudes.reserve(mesh.number_of_vertices());
   for(Vertex_index v : mesh.vertices())
   {
-    const py::ssize_t i = static_cast<py::ssize_t>(v);
     const Kernel::Vector_3 x = get(maps.direction, v);
-    d(i, 0) = x.x(), d(i, 1) = x.y(), d(i, 2) = x.z();
-    m(i) = get(maps.magnitude, v);
+    values.directions.insert(values.directions.end(), {x.x(), x.y(), x.z()});
+    values.magnitudes.push_back(get(maps.magnitude, v));
   }
+  return values;
+}
+
+// The arrays of one computed field (with the GIL held).
+Result make_result(Field_values values)
+{
+  Result r;
+  const py::ssize_t nv = static_cast<py::ssize_t>(values.magnitudes.size());
+  r.directions = py::array_t<double>({nv, py::ssize_t(3)});
+  r.magnitudes = py::array_t<double>(nv);
+  std::copy(values.directions.begin(), values.directions.end(), r.directions.mutable_data());
+  std::copy(values.magnitudes.begin(), values.magnitudes.end(), r.magnitudes.mutable_data());
+  const auto& singular = values.singular;
   r.singular_faces = py::array_t<long long>({static_cast<py::ssize_t>(singular.size()), py::ssize_t(2)});
   auto s = r.singular_faces.mutable_unchecked<2>();
   for(std::size_t i = 0; i < singular.size(); ++i)
@@ -38,8 +55,8 @@ Result make_result(const Mesh& mesh, const Maps& maps, const std::vector<std::pa
     s(static_cast<py::ssize_t>(i), 0) = static_cast<long long>(singular[i].first);
     s(static_cast<py::ssize_t>(i), 1) = singular[i].second;
   }
-  for(const auto& c : report.components) r.eigenvalues.push_back(c.eigenvalue);
-  r.report = std::move(report);
+  for(const auto& c : values.report.components) r.eigenvalues.push_back(c.eigenvalue);
+  r.report = std::move(values.report);
   return r;
 }
 
@@ -50,7 +67,7 @@ class Direction_field_object
 public:
   Direction_field_object(const py::object& V, const py::object& F)
     : m_mesh(make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
-                       option_as<Index_array>(F, "F", "an array of integers of shape (number of faces, 3)"))),
+                       integer_array(F, "F"))),
       m_maps(m_mesh)
   {}
 
@@ -63,6 +80,7 @@ public:
     const Options o = read_options(kwargs, m_mesh);
     std::vector<std::pair<Face_index, int> > singular;
     SMDF::Direction_field_result report;
+    Field_values values;
     {
       // the computation runs without the GIL: other Python threads go on (one object, one call at a time)
       py::gil_scoped_release release;
@@ -78,13 +96,37 @@ public:
         report = compute_field([&](const auto& np) { return m_field->compute(m_maps.direction, np); }, o, m_maps,
                                std::back_inserter(singular));
       }
+      values = copy_field(m_mesh, m_maps);  // still under the lock: the maps are this call's
     }
-    return make_result(m_mesh, m_maps, singular, std::move(report));
+    values.singular = std::move(singular);
+    values.report = std::move(report);
+    return make_result(std::move(values));
   }
 
-  double construction_ms() const { return m_field ? m_field->construction_ms() : 0.; }
+  // pybind11 takes the storage of an object made by __new__ alone (whose
+  // __init__ never ran) from this operator new when a method is called on it:
+  // zeroed, so that such an object is recognized by its signature (below)
+  // instead of read as garbage.
+  static void* operator new(std::size_t size)
+  {
+    void* p = ::operator new(size);
+    std::memset(p, 0, size);
+    return p;
+  }
+  static void operator delete(void* p) { ::operator delete(p); }
+
+  bool constructed() const { return m_signature == constructed_signature; }
+
+  double construction_ms()
+  {
+    py::gil_scoped_release release;  // a compute() of another thread may hold the lock
+    std::lock_guard<std::mutex> lock(m_busy);
+    return m_field ? m_field->construction_ms() : 0.;
+  }
 
 private:
+  static constexpr std::uint64_t constructed_signature = 0x534d44465f6f626aULL;
+  std::uint64_t m_signature = constructed_signature;
   Mesh m_mesh;
   Maps m_maps;
   std::unique_ptr<Field> m_field;
@@ -147,8 +189,20 @@ const char* const compute_doc =
   "  max_iterations=1000, tolerance=1e-10, seed=0   the eigen-solve\n"
   "Raises ValueError (InvalidInputError) for bad input, RuntimeError (SolverFailureError) if a solve fails.";
 
-py::tuple read_mesh(const std::string& path)
+// A path as Python gives it (str or os.PathLike), refused if it holds a NUL.
+std::string path_argument(const py::object& path)
 {
+  py::object text;
+  try { text = py::module_::import("os").attr("fsdecode")(path); }
+  catch(const py::error_already_set&) { throw py::type_error("path must be a str or an os.PathLike"); }
+  const std::string p = py::cast<std::string>(text);
+  if(p.find('\0') != std::string::npos) refuse("path contains a NUL character");
+  return p;
+}
+
+py::tuple read_mesh(const py::object& path_object)
+{
+  const std::string path = path_argument(path_object);
   Repaired_mesh<Mesh> in;
   {
     py::gil_scoped_release release;
@@ -180,6 +234,14 @@ py::tuple read_mesh(const std::string& path)
   return py::make_tuple(V, F, repairs);
 }
 
+// The object behind `self`; an instance made by __new__ alone has none.
+Direction_field_object& initialized(Direction_field_object* f)
+{
+  if(f == nullptr || !f->constructed())
+    throw py::type_error("DirectionField.__init__(V, F) was not called on this object");
+  return *f;
+}
+
 void bind_field(py::module_& m)
 {
   py::class_<Direction_field_object>(m, "DirectionField",
@@ -188,8 +250,9 @@ void bind_field(py::module_& m)
                                      "Globally_optimal_direction_field does.")
     .def(py::init<const py::object&, const py::object&>(), py::arg("V"), py::arg("F"),
          "V: (|V|, 3) float64 vertex positions; F: (|F|, 3) integer triangles (an oriented manifold mesh)")
-    .def("compute", [](Direction_field_object& f, const py::kwargs& kw) { return f.compute(kw); }, compute_doc)
-    .def_property_readonly("construction_ms", &Direction_field_object::construction_ms,
+    .def("compute", [](Direction_field_object* f, const py::kwargs& kw) { return initialized(f).compute(kw); },
+         compute_doc)
+    .def_property_readonly("construction_ms", [](Direction_field_object* f) { return initialized(f).construction_ms(); },
                            "milliseconds of the C++ class's mesh work (indexing, geometry, components; 0 before the first compute())");
   m.def("compute_globally_optimal_directions",
         [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -99,7 +101,7 @@ struct Options
   bool has_features = false;
   std::optional<double> feature_angle;
   std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
-  std::size_t max_iterations = 1000;
+  unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
   unsigned int seed = 0;
 };

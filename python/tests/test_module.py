@@ -194,16 +194,49 @@ for trial in range(2):
 """
 
 
-def test_two_threads_with_blas_threads_give_the_same_digits(shared):
-    # OpenBLAS with its own threads (the test suite otherwise runs it on one):
-    # its thread count is process-wide, so concurrent factorizations must not
-    # change each other's (meshes large enough for OpenBLAS to use threads)
+def run_with_blas_threads(script, shared):
+    """Runs `script` on nefertiti and fertility with OpenBLAS's own threads
+    (the test suite otherwise runs it on one): its thread count is
+    process-wide, so concurrent factorizations must not change each other's
+    (meshes large enough for OpenBLAS to use threads)."""
     env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
     paths = [os.path.join(shared, name) for name in ("nefertiti.off", "fertility.off")]
     if not all(os.path.exists(p) for p in paths):
         pytest.skip("nefertiti.off or fertility.off missing")
-    r = subprocess.run([sys.executable, "-c", CONCURRENT] + paths, env=env, capture_output=True, text=True)
+    r = subprocess.run([sys.executable, "-c", script] + paths, env=env, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr[-2000:]
+
+
+def test_two_threads_with_blas_threads_give_the_same_digits(shared):
+    run_with_blas_threads(CONCURRENT, shared)
+
+
+PRESCRIBED_CONCURRENT = """
+import sys, threading, numpy as np
+import surface_mesh_direction_fields as smdf
+meshes = [smdf.read_mesh(path)[:2] for path in sys.argv[1:]]
+edits = [smdf.compute_globally_optimal_directions(V, F, degree=4).singular_faces for V, F in meshes]
+def prescribed(i):
+    return smdf.compute_globally_optimal_directions(*meshes[i], degree=4, prescribed=edits[i]).directions
+def aligned(i):
+    return smdf.compute_globally_optimal_directions(*meshes[i], degree=4, align="curvature").directions
+jobs = [(prescribed, i) for i in range(len(meshes))] * 2 + [(aligned, i) for i in range(len(meshes))]
+alone = [f(i) for f, i in jobs]
+for trial in range(2):
+    out = [None] * len(jobs)
+    def work(k):
+        out[k] = jobs[k][0](jobs[k][1])
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(len(jobs))]
+    for t in threads: t.start()
+    for t in threads: t.join()
+    assert all(np.array_equal(a, b) for a, b in zip(alone, out)), "trial %d differs" % trial
+"""
+
+
+def test_prescribed_fields_in_threads_give_the_same_digits(shared):
+    # the prescription's factorization (CHOLMOD, which calls the BLAS) under the
+    # same one-at-a-time rule as the others
+    run_with_blas_threads(PRESCRIBED_CONCURRENT, shared)
 
 
 V0, F0 = octahedron()
@@ -245,7 +278,13 @@ def test_bad_meshes(V, F, error):
     (dict(constraints=(np.array([9]), np.array([[1.0, 0, 0]]))), ValueError),
     (dict(constraints=(np.array([0, 1]), np.array([[1.0, 0, 0]]))), ValueError),
     (dict(feature_edges=np.array([[0, 1]])), ValueError), (dict(feature_angle=200.0), ValueError),
-    (dict(prescribed=np.array([[99, 1]])), ValueError), (dict(max_iterations=-1), TypeError),
+    (dict(prescribed=np.array([[99, 1]])), ValueError), (dict(max_iterations=-1), ValueError),
+    (dict(max_iterations=2**32 + 3), ValueError), (dict(max_iterations=2**40), ValueError),
+    (dict(max_iterations=3.0), TypeError), (dict(seed=2**32), ValueError),
+    (dict(lambda_t=0.5), ValueError), (dict(alignment_weight=0.5), ValueError),           # nothing to align to
+    (dict(prescribed=np.array([[0.9, 1.0]])), ValueError),                               # not truncated to face 0
+    (dict(constraints=(np.array([0.9]), np.array([[1.0, 0, 0]]))), ValueError),
+    (dict(constraints=(np.array([1, 1]), np.array([[1.0, 0, 0], [0, 1.0, 0]]))), ValueError),  # listed twice
     (dict(frobnicate=1), TypeError), (dict(degree="four"), TypeError),
 ])
 def test_bad_options(options, error):
@@ -349,3 +388,98 @@ def test_folded_triangles_laid_out_in_the_tangent_plane():
     flat_V, flat_F = folded_grid()
     flat_V[2 * 6 + 2, :2] = [2.0, 2.0]
     assert smdf.compute_globally_optimal_directions(flat_V, flat_F, degree=4).tangent_plane_vertices == 0
+
+
+def test_integer_arrays_are_not_truncated():
+    with pytest.raises(ValueError) as e:
+        smdf.compute_globally_optimal_directions(V0, F0 + 0.7)
+    assert "integers" in str(e.value)
+    whole = smdf.compute_globally_optimal_directions(V0, F0.astype(np.float64), degree=4)  # whole numbers: taken
+    assert np.array_equal(whole.directions, smdf.compute_globally_optimal_directions(V0, F0, degree=4).directions)
+    with pytest.raises(TypeError):
+        smdf.compute_globally_optimal_directions(V0, F0.astype(str))
+
+
+def test_a_constraint_on_an_isolated_vertex_is_refused():
+    V = np.vstack([V0, [[5.0, 5.0, 5.0]]])  # vertex 6 belongs to no face
+    with pytest.raises(ValueError) as e:
+        smdf.compute_globally_optimal_directions(V, F0, constraints=(np.array([6]), np.array([[1.0, 0, 0]])))
+    assert "no face" in str(e.value)
+
+
+def test_threads_sharing_one_object_get_their_own_fields():
+    V, F = sphere(2)
+    degrees = [1, 2, 4, 6]
+    expected = {n: smdf.compute_globally_optimal_directions(V, F, degree=n) for n in degrees}
+    field = smdf.DirectionField(V, F)
+    wrong = []
+    def work(n):
+        for _ in range(15):
+            r = field.compute(degree=n)
+            if not (r.degree == n and np.array_equal(r.directions, expected[n].directions) and
+                    np.array_equal(r.magnitudes, expected[n].magnitudes) and
+                    np.array_equal(r.singular_faces, expected[n].singular_faces)):
+                wrong.append(n)
+    threads = [threading.Thread(target=work, args=(n,)) for n in degrees]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert wrong == []
+
+
+def test_an_object_made_without_init_is_refused():
+    bare = smdf.DirectionField.__new__(smdf.DirectionField)
+    with pytest.raises(TypeError):
+        bare.compute(degree=4)
+    with pytest.raises(TypeError):
+        bare.construction_ms
+
+
+def test_writers_write_through_links_devices_and_pipes(tmp_path):
+    V, F = sphere(1)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    smdf.write_vtk(tmp_path / "plain.vtk", V, F, r)  # an os.PathLike
+    expected = (tmp_path / "plain.vtk").read_bytes()
+    (tmp_path / "target.vtk").write_text("old")
+    os.symlink("target.vtk", tmp_path / "link.vtk")
+    smdf.write_vtk(str(tmp_path / "link.vtk"), V, F, r)
+    assert os.path.islink(tmp_path / "link.vtk") and (tmp_path / "target.vtk").read_bytes() == expected
+    smdf.write_vtk("/dev/null", V, F, r)
+    assert os.path.exists("/dev/null") and not os.path.isfile("/dev/null")
+    fifo = tmp_path / "pipe.vtk"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(open(fifo, "rb").read()))
+    reader.start()
+    smdf.write_vtk(str(fifo), V, F, r)
+    reader.join()
+    assert got == [expected] and not os.path.isfile(fifo)
+    assert sorted(os.listdir(tmp_path)) == ["link.vtk", "pipe.vtk", "plain.vtk", "target.vtk"]
+
+
+def test_writers_leave_other_files_alone(tmp_path):
+    V, F = sphere(1)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    (tmp_path / "out.vtk.partial").write_text("the user's")
+    (tmp_path / "victim").write_text("keep")
+    with pytest.raises(ValueError):
+        smdf.write_vtk(str(tmp_path / "victim") + "\x00.vtu", V, F, r)
+    with pytest.raises(ValueError):
+        smdf.write_rosy(str(tmp_path / "out.vtk"), V, F, smdf.compute_globally_optimal_directions(V, F, degree=2))
+    assert (tmp_path / "victim").read_text() == "keep"
+    assert (tmp_path / "out.vtk.partial").read_text() == "the user's"
+    failures = []
+    def work():
+        for _ in range(10):
+            try:
+                smdf.write_vtk(str(tmp_path / "out.vtk"), V, F, r)
+            except OSError as e:
+                failures.append(e)
+    threads = [threading.Thread(target=work) for _ in range(3)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert failures == []
+    assert sorted(os.listdir(tmp_path)) == ["out.vtk", "out.vtk.partial", "victim"]

@@ -454,4 +454,80 @@ if os.path.isfile(spot):
 else:
     print("skipped the scale sweep: no shared meshes")
 
+# every output finite at every scale, field lines and markers included: the
+# octahedron refined (an icosphere-like mesh of 512 faces) times 1e-299 ... 1e299
+def refined_octahedron(levels=3):
+    points, faces = [tuple(map(float, p)) for p in OCT_POINTS], list(OCT_FACES)
+    for _ in range(levels):
+        middle, new = {}, []
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                p = [(x + y) / 2 for x, y in zip(points[a], points[b])]
+                length = sum(x * x for x in p) ** 0.5
+                points.append(tuple(x / length for x in p))
+                middle[key] = len(points) - 1
+            return middle[key]
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            new += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+        faces = new
+    return points, faces
+
+sphere_points, sphere_faces = refined_octahedron()
+line_points = {}
+for factor in [1.0, 1e-299, 1e-100, 1e100, 1e299]:
+    name = write("sphere_%g.off" % factor, "OFF\n%d %d 0\n" % (len(sphere_points), len(sphere_faces)) +
+                 "".join("%r %r %r\n" % tuple(factor * x for x in p) for p in sphere_points) +
+                 "".join("3 %d %d %d\n" % f for f in sphere_faces))
+    outputs = {o: os.path.join(OUT, "sphere_%g_%s" % (factor, ending)) for o, ending in
+               [("--vtk", "field.vtk"), ("--ply", "field.ply"), ("--streamlines", "lines.vtu"),
+                ("--vtk-singularities", "markers.vtu"), ("--directions", "directions.txt")]}
+    r = run([name, "--quiet"] + [x for o, path in outputs.items() for x in (o, path)])
+    texts = {o: open(path).read().lower() if r.returncode == 0 else "" for o, path in outputs.items()}
+    check(r.returncode == 0 and not any("nan" in t or "inf" in t for t in texts.values()),
+          "sphere scaled by %g: every output finite (%d %r)" % (factor, r.returncode, r.stderr[-200:]))
+    count = texts["--streamlines"].split('numberofpoints="')[1].split('"')[0] if r.returncode == 0 else "0"
+    line_points[factor] = int(count)
+check(all(line_points[f] == line_points[1.0] > 0 for f in (1e-299, 1e299)),
+      "field lines at every power-of-ten scale of a sphere: %r" % line_points)
+check(all(line_points[f] > 0 for f in line_points), "field lines at any scale: %r" % line_points)
+
+# no output may replace an input, whatever its spelling: the prescription
+# and the guidance compared by device and inode, through links too
+work = os.path.join(OUT, "inputs_as_outputs")
+os.makedirs(work, exist_ok=True)
+sphere_mesh = os.path.join(OUT, "sphere_1.off")
+r = run([sphere_mesh, "--degree", "4", "--singularities", os.path.join(work, "p.sing"), "--quiet"])
+guidance_text = "".join("1 0 0\n" for _ in sphere_points)
+write("inputs_as_outputs/g.txt", guidance_text)
+os.symlink("p.sing", os.path.join(work, "link.sing"))
+prescription = open(os.path.join(work, "p.sing")).read()
+for args, what in [(["--prescribe", "p.sing", "--vtk", "./p.sing"], "--prescribe"),
+                   (["--prescribe", "p.sing", "--directions", "link.sing"], "--prescribe"),
+                   (["--guidance", "g.txt", "--align", "curvature", "--png", "./g.txt"], "--guidance"),
+                   (["--guidance", "g.txt", "--png", os.path.join(work, "g.txt")], "--guidance")]:
+    r = subprocess.run([BIN, sphere_mesh, "--quiet"] + args, cwd=work, capture_output=True, text=True, timeout=60)
+    check(r.returncode == 1 and what in r.stderr and "never overwritten" in r.stderr,
+          "%s: refused (%d %r)" % (" ".join(args), r.returncode, r.stderr))
+check(open(os.path.join(work, "p.sing")).read() == prescription and
+      open(os.path.join(work, "g.txt")).read() == guidance_text and os.path.islink(os.path.join(work, "link.sing")),
+      "the inputs are untouched")
+# a folder or a device as a prescription or guidance: one line
+for option in ["--prescribe", "--guidance"]:
+    expect_error([sphere_mesh, option, work], option + " given a folder", "is a directory")
+    expect_error([sphere_mesh, option, "/dev/zero"], option + " given a device", "is a device")
+# a prescription with a UTF-8 byte order mark is read as without it
+bom = write("inputs_as_outputs/bom.sing", b"\xef\xbb\xbf" + prescription.encode())
+r = run([sphere_mesh, "--prescribe", bom, "--quiet"])
+check(r.returncode == 0, "a prescription with a byte order mark: %d %r" % (r.returncode, r.stderr))
+# an output that is a link is written through it: the link stays
+write("inputs_as_outputs/target.txt", "old\n")
+os.symlink("target.txt", os.path.join(work, "out.txt"))
+r = subprocess.run([BIN, sphere_mesh, "--quiet", "--directions", "out.txt"], cwd=work, capture_output=True,
+                   text=True, timeout=60)
+check(r.returncode == 0 and os.path.islink(os.path.join(work, "out.txt")) and
+      len(open(os.path.join(work, "target.txt")).read().splitlines()) == len(sphere_points),
+      "an output link is written through: %d %r" % (r.returncode, r.stderr))
+
 check.finish()

@@ -73,13 +73,22 @@ struct Computed_field
   SMDF::Direction_field_result result;
 };
 
+// The text of an input file other than the mesh (folders, devices and pipes
+// nobody writes refused as the mesh reader refuses them), without a UTF-8
+// byte order mark.
+std::string text_file(const std::string& path, const char* what)
+{
+  std::string text = soup_reading::read_whole_file(path, what);
+  if(text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  return text;
+}
+
 // --guidance: one vector per vertex of the file, carried to the mesh's
 // vertices (copies included).
 std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>& input)
 {
   std::vector<Vector_3> guidance(input.mesh.number_of_vertices(), CGAL::NULL_VECTOR);
-  std::ifstream in(o.guidance);
-  if(!in) throw Usage_error("cannot open '" + o.guidance + "'");
+  std::istringstream in(text_file(o.guidance, "a guidance file"));
   std::vector<Vector_3> file_guidance;
   std::string line;
   while(std::getline(in, line))
@@ -105,8 +114,7 @@ std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>&
 // Returns the (face, k) of the repaired mesh.
 std::vector<std::pair<Face_index, int> > read_prescription(const Options& o, const Repaired_mesh<Mesh>& input)
 {
-  std::ifstream in(o.prescribe);
-  if(!in) throw Usage_error("cannot open '" + o.prescribe + "'");
+  std::istringstream in(text_file(o.prescribe, "a prescription file"));
   std::vector<Face_index> first_triangle(input.file_faces, Face_index());
   for(Face_index f : input.mesh.faces())
   {
@@ -332,12 +340,12 @@ void register_outputs(const Options& o, Output_files& outputs)
     {"--directions", &o.directions}, {"--singularities", &o.singularities}, {"--json-file", &o.json_file},
     {"--png", &o.png}, {"--vtk", &o.vtk}, {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
     {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out}};
-  for(const auto& p : paths) outputs.add(p.first, *p.second, o.mesh);
-  for(const auto& input : {std::make_pair("--guidance", &o.guidance), std::make_pair("--prescribe", &o.prescribe)})
-    if(!input.second->empty())
-      for(const auto& p : paths)
-        if(*p.second == *input.second)
-          throw Usage_error(std::string(p.first) + " would overwrite the " + input.first + " file");
+  const Input_files inputs = {{"input mesh", o.mesh}, {"--guidance", o.guidance}, {"--prescribe", o.prescribe}};
+  for(const auto& input : inputs)  // the same spelling, before the file exists
+    for(const auto& p : paths)
+      if(!input.second.empty() && *p.second == input.second)
+        throw Usage_error(std::string(p.first) + " would overwrite the " + input.first + " file");
+  for(const auto& p : paths) outputs.add(p.first, *p.second, inputs);
 }
 
 // What the computation did, on stderr while running; a solve that stopped

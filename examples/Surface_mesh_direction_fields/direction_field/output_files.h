@@ -8,16 +8,18 @@
 // A path that exists and is not a regular file (/dev/null, /dev/stdout, a
 // pipe) is written directly, and checked the same way. A run stopped by a
 // signal whose default action ends the program (INT, TERM, HUP, QUIT, XFSZ,
-// XCPU, ALRM, USR1, USR2, VTALRM) removes its temporary files before it ends
+// XCPU, ALRM, USR1, USR2, VTALRM), or a call of exit() inside a library,
+// removes its temporary files before it ends
 // (the program ignores PIPE: a closed standard output is a write error).
+// A path that is a symbolic link is written through it: the link stays and
+// its target gets the new content. No output may be one of the run's input
+// files, whatever its spelling (compared by device and inode).
 // Two outputs are one file when their folders resolve to the same one and
 // their names match, or when they are the same existing file (links). If a
 // rename fails while the outputs are put in place, those already renamed are
 // taken back and the older files of those names restored.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
 #define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
-
-#include "command_line_options.h"
 
 #include <cerrno>
 #include <csignal>
@@ -26,7 +28,9 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -48,6 +52,14 @@ extern "C" inline void remove_temporaries_and_stop(int signal)
   std::raise(signal);
 }
 
+// A library that ends the process with exit() (libgomp when it cannot create
+// a thread, for one) leaves no temporary file either.
+extern "C" inline void remove_temporaries_at_exit()
+{
+  for(int i = 0; i < temporary_count; ++i)
+    if(temporary_paths[i][0] != '\0') ::unlink(temporary_paths[i]);
+}
+
 // Records `path` (returns its slot, or -1 if it cannot be recorded).
 inline int remember(const std::string& path)
 {
@@ -55,6 +67,7 @@ inline int remember(const std::string& path)
   const int slot = temporary_count;
   std::memcpy(temporary_paths[slot], path.c_str(), path.size() + 1);
   temporary_count = slot + 1;
+  if(slot == 0) std::atexit(remove_temporaries_at_exit);
   if(slot == 0)
     for(int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGXFSZ, SIGXCPU, SIGALRM, SIGUSR1, SIGUSR2, SIGVTALRM})
       std::signal(s, remove_temporaries_and_stop);
@@ -68,40 +81,49 @@ inline void forget(int slot)
 
 } // namespace output_files_internal
 
+// An output that cannot be written, or that would replace an input.
+struct Output_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+// The files the run reads, by what names them ("--prescribe") and path.
+typedef std::vector<std::pair<std::string, std::string> > Input_files;
+
 class Output_files
 {
 public:
-  Output_files() = default;
+  // `remove_on_signal`: a signal that ends the process removes the temporary
+  // files (the program); false leaves the process's signal handlers alone
+  // (the Python module, whose interpreter owns them).
+  explicit Output_files(bool remove_on_signal = true) : remove_on_signal_(remove_on_signal) {}
   Output_files(const Output_files&) = delete;
   Output_files& operator=(const Output_files&) = delete;
   ~Output_files() { discard(); }
 
-  // Registers the output `path` of `option` (nothing if `path` is empty).
-  // `input` is the mesh file, which no output may replace.
-  void add(const std::string& option, const std::string& path, const std::string& input)
+  // Registers the output `path` of `option` (nothing if `path` is empty);
+  // no input file may be replaced by it.
+  void add(const std::string& option, const std::string& path, const Input_files& inputs)
   {
     if(path.empty()) return;
-    if(path == "-") throw Usage_error(option + " needs a file name (use /dev/stdout to write to standard output)");
-    struct stat target;
-    const bool exists = ::stat(path.c_str(), &target) == 0;
-    if(exists && S_ISDIR(target.st_mode)) throw Usage_error(option + " '" + path + "' is a directory");
-    struct stat mesh;
-    if(exists && S_ISREG(target.st_mode) && ::stat(input.c_str(), &mesh) == 0 && mesh.st_dev == target.st_dev &&
-       mesh.st_ino == target.st_ino)
-      throw Usage_error(option + " '" + path + "' is the input mesh, which is never overwritten");
-    const std::string key = resolved(path);
+    if(path == "-") throw Output_error(option + " needs a file name (use /dev/stdout to write to standard output)");
+    if(path.find('\0') != std::string::npos) throw Output_error(option + ": the file name contains a NUL character");
+    const std::string target = link_target(path);
+    struct stat existing;
+    const bool exists = ::stat(target.c_str(), &existing) == 0;
+    if(exists && S_ISDIR(existing.st_mode)) throw Output_error(option + " '" + path + "' is a directory");
+    if(exists) refuse_inputs(option, path, existing, inputs);
+    const std::string key = resolved(target);
     for(const auto& f : files_)
       if(f->path == path || f->key == key ||
-         (exists && f->exists && f->device == target.st_dev && f->inode == target.st_ino))
-        throw Usage_error(f->option + " and " + option + " both write '" + path + "'");
-    std::unique_ptr<File> f(new File{option, path, exists && !S_ISREG(target.st_mode) ? path : temporary_name(path), {}});
+         (exists && f->exists && f->device == existing.st_dev && f->inode == existing.st_ino))
+        throw Output_error(f->option + " and " + option + " both write '" + path + "'");
+    const bool direct = exists && !S_ISREG(existing.st_mode);  // a device or a pipe: written as it is
+    std::unique_ptr<File> f(new File{option, path, target, direct ? target : temporary_name(target), {}});
     f->key = key;
     f->exists = exists;
-    f->device = exists ? target.st_dev : 0;
-    f->inode = exists ? target.st_ino : 0;
-    if(f->written != f->path) f->slot = output_files_internal::remember(f->written);
+    f->device = exists ? existing.st_dev : 0;
+    f->inode = exists ? existing.st_ino : 0;
+    if(f->written != f->target && remove_on_signal_) f->slot = output_files_internal::remember(f->written);
     f->stream.open(f->written, std::ios::binary | std::ios::trunc);
-    if(!f->stream) throw Usage_error("cannot write " + option + " '" + path + "': " + std::strerror(errno));
+    if(!f->stream) throw Output_error("cannot write " + option + " '" + path + "': " + std::strerror(errno));
     files_.push_back(std::move(f));
   }
 
@@ -115,7 +137,7 @@ public:
     f.stream.flush();
     const bool written = static_cast<bool>(f.stream);
     f.stream.close();
-    if(!written || !f.stream) throw Usage_error("could not write " + f.option + " '" + f.path + "' (disk full?)");
+    if(!written || !f.stream) throw Output_error("could not write " + f.option + " '" + f.path + "' (disk full?)");
   }
 
   // Closes every output but `path`, checked.
@@ -133,16 +155,16 @@ public:
     for(auto& f : files_)
       if(f->stream.is_open()) close(f->path);
     for(auto& f : files_)
-      if(f->written != f->path) keep_older(*f);
+      if(f->written != f->target) keep_older(*f);
     for(std::size_t i = 0; i < files_.size(); ++i)
     {
       File& f = *files_[i];
-      if(f.written != f.path && std::rename(f.written.c_str(), f.path.c_str()) != 0)
+      if(f.written != f.target && std::rename(f.written.c_str(), f.target.c_str()) != 0)
       {
         const std::string reason = std::strerror(errno);
         for(std::size_t j = 0; j < i; ++j) take_back(*files_[j]);
         for(auto& g : files_) drop_older(*g);
-        throw Usage_error("cannot write " + f.option + " '" + f.path + "': " + reason);
+        throw Output_error("cannot write " + f.option + " '" + f.path + "': " + reason);
       }
       f.committed = true;
       output_files_internal::forget(f.slot);
@@ -153,7 +175,8 @@ public:
 private:
   struct File
   {
-    std::string option, path, written;  // written: the temporary name, or the path itself
+    std::string option, path, target;  // target: the path, or the file its link names
+    std::string written;               // the temporary name, or the target itself
     std::ofstream stream;
     bool committed = false;
     int slot = -1;  // in output_files_internal's list of temporary files
@@ -163,6 +186,32 @@ private:
     ino_t inode = 0;
     std::string older;      // during commit(): a second link to the older file of that name
   };
+
+  // The file a symbolic link names (the path itself if it is no link, or if
+  // the link leads nowhere).
+  static std::string link_target(const std::string& path)
+  {
+    struct stat link;
+    if(::lstat(path.c_str(), &link) != 0 || !S_ISLNK(link.st_mode)) return path;
+    char* real = ::realpath(path.c_str(), nullptr);
+    if(!real) return path;
+    const std::string target = real;
+    std::free(real);
+    return target;
+  }
+
+  // Refuses an output that is one of the inputs (an existing file `existing`).
+  static void refuse_inputs(const std::string& option, const std::string& path, const struct stat& existing,
+                            const Input_files& inputs)
+  {
+    for(const auto& input : inputs)
+    {
+      struct stat read;
+      if(input.second.empty() || ::stat(input.second.c_str(), &read) != 0) continue;
+      if(read.st_dev == existing.st_dev && read.st_ino == existing.st_ino)
+        throw Output_error(option + " '" + path + "' is the " + input.first + " file, which is never overwritten");
+    }
+  }
 
   // The path with its folder resolved (links, "..", "."): one key per file.
   static std::string resolved(const std::string& path)
@@ -180,17 +229,17 @@ private:
   void keep_older(File& f)
   {
     struct stat existing;
-    if(::lstat(f.path.c_str(), &existing) != 0 || !S_ISREG(existing.st_mode)) return;
+    if(::lstat(f.target.c_str(), &existing) != 0 || !S_ISREG(existing.st_mode)) return;
     std::string name = f.written + ".older";
-    if(::link(f.path.c_str(), name.c_str()) == 0) f.older = name;
+    if(::link(f.target.c_str(), name.c_str()) == 0) f.older = name;
   }
 
   // Undoes the rename of f: its older file back, or no file of that name.
   void take_back(File& f)
   {
-    if(f.written == f.path || !f.committed) return;
-    if(!f.older.empty() && std::rename(f.older.c_str(), f.path.c_str()) == 0) f.older.clear();
-    else if(f.older.empty()) std::remove(f.path.c_str());
+    if(f.written == f.target || !f.committed) return;
+    if(!f.older.empty() && std::rename(f.older.c_str(), f.target.c_str()) == 0) f.older.clear();
+    else if(f.older.empty()) std::remove(f.target.c_str());
     f.committed = false;
   }
 
@@ -215,7 +264,7 @@ private:
     const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
     std::string pattern = directory + "." + name + ".partial-XXXXXX";
     const int fd = ::mkstemp(&pattern[0]);
-    if(fd < 0) throw Usage_error("cannot write '" + path + "': " + std::strerror(errno));
+    if(fd < 0) throw Output_error("cannot write '" + path + "': " + std::strerror(errno));
     const mode_t mask = ::umask(0);
     ::umask(mask);
     ::fchmod(fd, 0666 & ~mask);
@@ -228,11 +277,12 @@ private:
     for(auto& f : files_)
     {
       if(f->stream.is_open()) f->stream.close();
-      if(!f->committed && f->written != f->path) std::remove(f->written.c_str());
+      if(!f->committed && f->written != f->target) std::remove(f->written.c_str());
       output_files_internal::forget(f->slot);
     }
   }
 
+  bool remove_on_signal_;
   std::vector<std::unique_ptr<File> > files_;
 };
 

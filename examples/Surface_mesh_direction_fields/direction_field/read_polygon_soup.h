@@ -26,12 +26,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cerrno>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <poll.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <unordered_map>
 #include <vector>
 
@@ -82,33 +86,71 @@ inline std::string excerpt(const std::string& text, std::size_t longest = 40)
 // The most a pipe is read for (a regular file is read at its size).
 constexpr std::size_t largest_piped_file = std::size_t(1) << 32;
 
-// The file's bytes. A regular file is read in one piece; a pipe until its
-// end, up to largest_piped_file; devices (/dev/zero, /dev/urandom: no end)
-// and sockets are refused.
-inline std::string read_whole_file(const std::string& path)
+// How long a named pipe may stay without a writer before it is refused.
+constexpr int pipe_wait_seconds = 30;
+
+// Opens the pipe `path` without blocking, then waits for its writer (at most
+// pipe_wait_seconds): a pipe nobody writes is an error, not a hang.
+inline int open_pipe(const std::string& path, const std::string& what)
+{
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if(fd < 0) throw Mesh_input_error("cannot open '" + path + "'");
+  pollfd ready{fd, POLLIN, 0};
+  int polled;
+  do polled = ::poll(&ready, 1, 1000 * pipe_wait_seconds);
+  while(polled < 0 && errno == EINTR);
+  if(polled <= 0)
+  {
+    ::close(fd);
+    throw Mesh_input_error("'" + path + "' is a pipe that nobody wrote to within " +
+                           std::to_string(pipe_wait_seconds) + " s (" + what + " expected)");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  return fd;
+}
+
+inline std::string read_pipe(const std::string& path, const std::string& what)
+{
+  const int fd = open_pipe(path, what);
+  std::string bytes;
+  char chunk[1 << 16];
+  for(;;)
+  {
+    const ssize_t got = ::read(fd, chunk, sizeof chunk);
+    if(got < 0 && errno == EINTR) continue;
+    if(got <= 0)
+    {
+      ::close(fd);
+      if(got < 0) throw Mesh_input_error("cannot read '" + path + "'");
+      return bytes;
+    }
+    bytes.append(chunk, static_cast<std::size_t>(got));
+    if(bytes.size() > largest_piped_file)
+    {
+      ::close(fd);
+      throw Mesh_input_error("'" + path + "' is a pipe of more than " + std::to_string(largest_piped_file) + " bytes");
+    }
+  }
+}
+
+// The bytes of the input file `path` (`what` names it in messages: "a mesh
+// file", "a prescription file"). A regular file is read in one piece; a
+// named pipe until its end, up to largest_piped_file, once a writer comes
+// (see open_pipe()); folders, devices (/dev/zero, /dev/urandom: no end) and
+// sockets are refused.
+inline std::string read_whole_file(const std::string& path, const std::string& what = "a mesh file")
 {
   struct stat status;
   if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
-  if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not a mesh file");
+  if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not " + what);
   if(!S_ISREG(status.st_mode) && !S_ISFIFO(status.st_mode))
-    throw Mesh_input_error("'" + path + "' is a device or a socket, not a mesh file");
+    throw Mesh_input_error("'" + path + "' is a device or a socket, not " + what);
+  if(S_ISFIFO(status.st_mode)) return read_pipe(path, what);
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Mesh_input_error("cannot open '" + path + "'");
-  std::string bytes;
-  if(S_ISREG(status.st_mode))
-  {
-    bytes.resize(static_cast<std::size_t>(status.st_size));
-    in.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
-    if(in.gcount() != static_cast<std::streamsize>(bytes.size())) throw Mesh_input_error("cannot read '" + path + "'");
-    return bytes;
-  }
-  char chunk[1 << 16];
-  while(in.read(chunk, sizeof chunk) || in.gcount() > 0)
-  {
-    bytes.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if(bytes.size() > largest_piped_file)
-      throw Mesh_input_error("'" + path + "' is a pipe of more than " + std::to_string(largest_piped_file) + " bytes");
-  }
+  std::string bytes(static_cast<std::size_t>(status.st_size), '\0');
+  in.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
+  if(in.gcount() != static_cast<std::streamsize>(bytes.size())) throw Mesh_input_error("cannot read '" + path + "'");
   return bytes;
 }
 

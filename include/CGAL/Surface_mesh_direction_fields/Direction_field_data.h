@@ -25,6 +25,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
@@ -82,12 +83,42 @@ inline void check_degree(int degree)
                               std::to_string(degree) + ")");
 }
 
+// The exponent e such that 2^-e brings the largest coordinate of `points`
+// to [1/2, 1) where it lies beyond 2^±`limit` (0 elsewhere, and for no or
+// non-finite coordinates): products of coordinates (cross products, squared
+// lengths) overflow or underflow near 1e±150, and a computation on the
+// points times 2^-e, an exact scaling, gives the same unit vectors and the
+// same points once scaled back.
+inline int extreme_scale_exponent(const std::vector<Vec3>& points, int limit)
+{
+  double largest = 0.;
+  for(const Vec3& p : points)
+    for(double x : p) largest = (std::max)(largest, std::abs(x));
+  if(!(largest > 0.) || !std::isfinite(largest)) return 0;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return exponent > limit || exponent < -limit ? exponent : 0;
+}
+
+inline std::vector<Vec3> scaled_by_power_of_two(std::vector<Vec3> points, int exponent)
+{
+  for(Vec3& p : points)
+    for(double& x : p) x = std::ldexp(x, exponent);
+  return points;
+}
+
+// Coordinates beyond 2^±400 (about 1e±120) are scaled for the computation of
+// normals and per-face directions; meshes of ordinary size keep their bits.
+constexpr int extreme_coordinate_exponent = 400;
+
 // The normals of a triangle soup, as the library computes them
 // (vertex_normals.h): Euclidean corner angles, the corners of each vertex in
 // face order.
 inline std::vector<Vec3> angle_weighted_normals(const std::vector<Vec3>& points,
                                                 const std::vector<std::array<std::size_t, 3> >& faces)
 {
+  if(const int e = extreme_scale_exponent(points, extreme_coordinate_exponent))
+    return angle_weighted_normals(scaled_by_power_of_two(points, -e), faces);
   std::vector<std::size_t> offset(points.size() + 1, 0), corner_of_vertex(3 * faces.size());
   for(const auto& t : faces)
     for(std::size_t v : t) ++offset[v + 1];
@@ -285,6 +316,12 @@ inline std::vector<std::array<double, 3> > face_directions(const Direction_field
 {
   using internal::Vec3;
   using internal::operator-;
+  if(const int e = internal::extreme_scale_exponent(data.points, internal::extreme_coordinate_exponent))
+  {
+    Direction_field_data scaled = data;
+    scaled.points = internal::scaled_by_power_of_two(data.points, -e);
+    return face_directions(scaled);
+  }
   std::vector<Vec3> result(data.faces.size(), Vec3{0., 0., 0.});
   const int n = data.degree;
   const bool has_normals = data.normals.size() == data.points.size();

@@ -377,6 +377,18 @@ inline std::vector<Streamline> trace_streamlines(const Direction_field_data& dat
     throw Invalid_input_error("trace_streamlines: the data has no per-face directions");
   if(!(options.seed_spacing > 0.) || !(options.maximum_length > 0.) || !(options.minimum_separation >= 0.))
     throw Invalid_input_error("trace_streamlines: the seed spacing and the maximum length must be positive, the separation not negative");
+  // the tracer's lengths and tolerances hold for coordinates within about
+  // 1e±18: beyond, the lines are traced on the points scaled by a power of
+  // two and scaled back (exactly)
+  if(const int e = internal::extreme_scale_exponent(data.points, 60))
+  {
+    Direction_field_data scaled = data;
+    scaled.points = internal::scaled_by_power_of_two(data.points, -e);
+    for(auto& p : scaled.singularity_points) p = internal::scaled_by_power_of_two({p}, -e)[0];
+    std::vector<Streamline> lines = trace_streamlines(scaled, options);
+    for(Streamline& l : lines) l.points = internal::scaled_by_power_of_two(l.points, e);
+    return lines;
+  }
   const internal::Streamline_tracer tracer(data, options);
   if(!tracer.has_extent()) return std::vector<Streamline>();
   return tracer.trace_all();

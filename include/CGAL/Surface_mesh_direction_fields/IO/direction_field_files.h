@@ -548,7 +548,11 @@ inline VTK_grid singularity_marker_grid(const Direction_field_data& data)
             " (CGAL Surface_mesh_direction_fields)";
   g.degree = data.degree;
   const std::array<Vec3, 2> box = bounding_box(data.points);
-  const double radius = 0.01 * norm(box[1] - box[0]);
+  const Vec3 diagonal = box[1] - box[0];
+  double length = norm(diagonal);
+  if(!std::isfinite(length))  // its square overflowed (coordinates near 1e300)
+    length = std::hypot(std::hypot(diagonal[0], diagonal[1]), diagonal[2]);
+  const double radius = 0.01 * length;
   VTK_array point_index{"singularity_index", 1, {}}, cell_index{"singularity_index", 1, {}};
   for(std::size_t i = 0; i < data.singularities.size(); ++i)
   {

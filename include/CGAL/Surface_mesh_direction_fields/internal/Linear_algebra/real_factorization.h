@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -24,6 +25,9 @@
 #endif
 
 #include <memory>
+#include <new>
+#include <mutex>
+#include <type_traits>
 
 // Real symmetric positive definite sparse matrices, factored once and solved
 // many times: the vertex Laplacian of the connection change for prescribed
@@ -38,33 +42,66 @@ typedef Eigen::SparseMatrix<double> Real_sparse_matrix;
 // A real symmetric positive definite sparse matrix, factored once (CHOLMOD's
 // supernodal Cholesky factorization when the package uses CHOLMOD, Eigen's
 // simplicial one otherwise), then solved for any number of right-hand sides.
+// CHOLMOD's factorization calls the BLAS, so it follows the discipline of the
+// package's own (dense_kernels.h): one such factorization at a time in the
+// process (the same digits whatever else runs), and only where the BLAS's
+// work buffers fit in the address space; otherwise Eigen's simplicial
+// factorization runs, and a shortage of memory is std::bad_alloc, not a hang.
 class Factored_real_matrix
 {
+  typedef Eigen::SimplicialLLT<Real_sparse_matrix> Simplicial_solver;
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-  typedef Eigen::CholmodSupernodalLLT<Real_sparse_matrix> Solver;
+  typedef Eigen::CholmodSupernodalLLT<Real_sparse_matrix> Blas_solver;
 #else
-  typedef Eigen::SimplicialLLT<Real_sparse_matrix> Solver;
+  typedef Simplicial_solver Blas_solver;
 #endif
-  std::unique_ptr<Solver> m_solver = std::make_unique<Solver>();
+  std::unique_ptr<Blas_solver> m_blas_solver;
+  std::unique_ptr<Simplicial_solver> m_simplicial_solver;
   Eigen::Index m_size = 0;
+
+  template <typename Solver>
+  static std::unique_ptr<Solver> factored(const Real_sparse_matrix& S)
+  {
+    auto solver = std::make_unique<Solver>();
+    solver->compute(S);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+    if constexpr(!std::is_same<Solver, Simplicial_solver>::value)
+      if(solver->cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+#endif
+    if(solver->info() != Eigen::Success)
+      throw Solver_failure_error("the sparse solver could not factor the Laplacian of the connection change");
+    return solver;
+  }
+
+  template <typename Solver>
+  static Eigen::VectorXd solved(const Solver& solver, const Eigen::VectorXd& B)
+  {
+    Eigen::VectorXd X = solver.solve(B);
+    if(solver.info() != Eigen::Success || !X.allFinite())
+      throw Solver_failure_error("the sparse solver failed to solve with the Laplacian of the connection change");
+    return X;
+  }
 
 public:
   void factor(const Real_sparse_matrix& S)
   {
     m_size = S.rows();
+    m_blas_solver.reset();
+    m_simplicial_solver.reset();
     if(m_size == 0) return;
-    m_solver->compute(S);
-    if(m_solver->info() != Eigen::Success)
-      throw Solver_failure_error("the sparse solver could not factor the Laplacian of the connection change");
+    if(std::is_same<Blas_solver, Simplicial_solver>::value || !blas_work_space_available())
+    {
+      m_simplicial_solver = factored<Simplicial_solver>(S);
+      return;
+    }
+    std::lock_guard<std::mutex> exclusive(blas_factorization_lock());
+    m_blas_solver = factored<Blas_solver>(S);
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& B) const
   {
     if(m_size == 0) return B;
-    Eigen::VectorXd X = m_solver->solve(B);
-    if(m_solver->info() != Eigen::Success || !X.allFinite())
-      throw Solver_failure_error("the sparse solver failed to solve with the Laplacian of the connection change");
-    return X;
+    return m_blas_solver ? solved(*m_blas_solver, B) : solved(*m_simplicial_solver, B);
   }
 };
 

@@ -25,7 +25,9 @@
 #include <CGAL/number_utils.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 // The named parameters of one field read into a Field_request, by vertex
@@ -92,6 +94,20 @@ Alignment_request alignment_request(const NamedParameters& np, bool has_guidance
   return r;
 }
 
+// A count given as any integer type, refused outside [0, 2^32 - 1] rather
+// than wrapped (2^32 + 3 iterations would otherwise run 3).
+template <typename Integer>
+unsigned int checked_count(Integer value, const char* name)
+{
+  static_assert(std::is_integral<Integer>::value, "a count is an integer");
+  bool in_range = true;
+  if constexpr(std::is_signed<Integer>::value) in_range = value >= 0;
+  if(in_range && static_cast<unsigned long long>(value) > std::numeric_limits<unsigned int>::max()) in_range = false;
+  if(!in_range)
+    throw Invalid_input_error(std::string(name) + " must be an integer from 0 to 4294967295");
+  return static_cast<unsigned int>(value);
+}
+
 // n, s and the eigen-solve's options.
 template <typename NamedParameters>
 void read_field_parameters(const NamedParameters& np, Field_request& r)
@@ -101,9 +117,10 @@ void read_field_parameters(const NamedParameters& np, Field_request& r)
   r.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
   r.s = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
   check_field_parameters(r.degree, r.s);
-  r.max_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u);
+  r.max_iterations =
+    checked_count(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1000u), "number_of_iterations");
   r.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
-  r.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  r.random_seed = checked_count(choose_parameter(get_parameter(np, internal_np::random_seed), 0u), "random_seed");
   if(!(r.residual_tolerance >= 0.))
     throw Invalid_input_error("the residual tolerance must be non-negative");
 }
