@@ -22,6 +22,14 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
+// the internals checked below (the engine itself may be compiled apart)
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/cycles.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
 #include "generated_meshes.h"
 #include "test_support.h"
