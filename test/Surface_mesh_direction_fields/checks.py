@@ -25,3 +25,26 @@ class Checks:
     def finish(self):
         print("%d checks, %d failed" % (self.count, len(self.failures)))
         sys.exit(1 if self.failures else 0)
+
+
+def refined_octahedron(levels=3):
+    """The octahedron with each triangle split in four `levels` times, every
+    point on the unit sphere: (points, triangles)."""
+    points = [(1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0), (0.0, 0.0, -1.0)]
+    faces = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+    for _ in range(levels):
+        middle, refined = {}, []
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                p = [(x + y) / 2 for x, y in zip(points[a], points[b])]
+                length = sum(x * x for x in p) ** 0.5
+                points.append(tuple(x / length for x in p))
+                middle[key] = len(points) - 1
+            return middle[key]
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            refined += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+        faces = refined
+    return points, faces

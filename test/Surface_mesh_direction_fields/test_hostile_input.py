@@ -16,7 +16,7 @@ import struct
 import subprocess
 import sys
 
-from checks import Checks
+from checks import Checks, refined_octahedron
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 SHARED = sys.argv[3] if len(sys.argv) > 3 else ""
@@ -455,25 +455,7 @@ else:
     print("skipped the scale sweep: no shared meshes")
 
 # every output finite at every scale, field lines and markers included: the
-# octahedron refined (an icosphere-like mesh of 512 faces) times 1e-299 ... 1e299
-def refined_octahedron(levels=3):
-    points, faces = [tuple(map(float, p)) for p in OCT_POINTS], list(OCT_FACES)
-    for _ in range(levels):
-        middle, new = {}, []
-        def mid(a, b):
-            key = (min(a, b), max(a, b))
-            if key not in middle:
-                p = [(x + y) / 2 for x, y in zip(points[a], points[b])]
-                length = sum(x * x for x in p) ** 0.5
-                points.append(tuple(x / length for x in p))
-                middle[key] = len(points) - 1
-            return middle[key]
-        for a, b, c in faces:
-            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
-            new += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
-        faces = new
-    return points, faces
-
+# octahedron refined three times (512 faces) times 1e-299 ... 1e299
 sphere_points, sphere_faces = refined_octahedron()
 line_points = {}
 for factor in [1.0, 1e-299, 1e-100, 1e100, 1e299]:

@@ -16,7 +16,7 @@ import shutil
 import subprocess
 import sys
 
-from checks import Checks
+from checks import Checks, refined_octahedron
 
 BIN, SCRIPT, OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 pvbatch = shutil.which("pvbatch")
@@ -72,23 +72,7 @@ with open(check_script, "w") as f:
 
 octahedron = os.path.join(OUT, "sphere.off")
 # a subdivided octahedron on the unit sphere: 8 singularities of index +1/4 for n = 4
-import math
-points = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
-faces = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
-for _ in range(3):
-    middle, new_faces = {}, []
-    def mid(a, b):
-        key = (min(a, b), max(a, b))
-        if key not in middle:
-            p = [(x + y) / 2 for x, y in zip(points[a], points[b])]
-            r = math.sqrt(sum(x * x for x in p))
-            points.append(tuple(x / r for x in p))
-            middle[key] = len(points) - 1
-        return middle[key]
-    for a, b, c in faces:
-        ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
-        new_faces += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
-    faces = new_faces
+points, faces = refined_octahedron(3)
 with open(octahedron, "w") as f:
     f.write("OFF\n%d %d 0\n" % (len(points), len(faces)) + "".join("%r %r %r\n" % p for p in points) +
             "".join("3 %d %d %d\n" % t for t in faces))

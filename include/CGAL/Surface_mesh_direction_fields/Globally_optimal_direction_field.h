@@ -342,7 +342,7 @@ private:
 };
 
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION
-// compiled once, in the library Surface_mesh_direction_fields_engine
+// compiled once, in the library CGAL::Surface_mesh_direction_fields_compiled
 extern template class internal::Field_engine<Default_direction_field_solver>;
 #endif
 

@@ -23,14 +23,12 @@
 
 // Transparent huge pages for the package's own large buffers.
 //
-// The first write to a fresh 4 KB page costs a page fault. On the virtual
-// machines the benchmark was measured on (Firecracker, with free page
-// reporting) faults are expensive enough that the page faults of the local
-// matrices took more time than computing them (benchmark's README). A 2 MB
-// huge page costs one fault. Linux grants huge pages to a range
-// advised with MADV_HUGEPAGE when the system setting
-// (/sys/kernel/mm/transparent_hugepage/enabled) is `madvise`, as on the
-// machines measured, or `always`; elsewhere, or with
+// The first write to a fresh 4 KB page costs a page fault, and on virtual
+// machines faults can cost more than the arithmetic that fills the page (the
+// benchmark's README has the numbers). A 2 MB huge page costs one fault.
+// Linux grants huge pages to a range advised with MADV_HUGEPAGE when the
+// system setting (/sys/kernel/mm/transparent_hugepage/enabled) is `madvise`
+// or `always`; elsewhere, or with
 // CGAL_SURFACE_MESH_DIRECTION_FIELDS_NO_HUGE_PAGES defined, this does nothing.
 // The advice must come before the buffer is first written. It covers only
 // the package's own buffers: the whole process (Eigen, CHOLMOD) gets huge

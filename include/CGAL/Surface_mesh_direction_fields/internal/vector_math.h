@@ -42,7 +42,6 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double squared_norm(const Vec3& a) { return dot(a, a); }
-// a / |a|; a itself if |a| is not positive (the zero vector stays zero)
 // The corners (low, high) of the axis-aligned bounding box of `points`
 // (both zero if there are none).
 inline std::array<Vec3, 2> bounding_box(const std::vector<Vec3>& points)
@@ -59,6 +58,7 @@ inline std::array<Vec3, 2> bounding_box(const std::vector<Vec3>& points)
   return box;
 }
 
+// a / |a|; a itself if |a| is not positive (the zero vector stays zero)
 inline Vec3 normalized(const Vec3& a)
 {
   const double l = norm(a);

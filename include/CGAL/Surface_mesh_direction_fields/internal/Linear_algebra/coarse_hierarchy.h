@@ -29,7 +29,7 @@
 // The pieces of one level of a cheap estimate of the smallest eigenpair of
 // the pencil (A, M), in the spirit of algebraic multigrid: aggregation, the
 // coarse pencil, prolongation and smoothing. The eigen-solve
-// (inverse_iteration.h) chains levels of them into a start vector and an
+// (eigen_solve.h) chains levels of them into a start vector and an
 // upper bound of lambda_1, with which it shifts its factorization close to
 // lambda_1, where inverse iteration converges several times faster.
 

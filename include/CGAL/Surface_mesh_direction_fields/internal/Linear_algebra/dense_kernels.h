@@ -43,16 +43,15 @@
 // Where the factorization's own threads work side by side (the independent
 // subtrees of the elimination tree, whose supernodes are small), a
 // multithreaded BLAS called from each of them at once makes them wait for
-// each other (a factorization 2 to 4 times slower was measured with
-// OpenBLAS on two threads). Two ways out, chosen at build time:
+// each other (the benchmark's README has the cost). Two ways out, chosen at
+// build time:
 // - with OpenBLAS (CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS,
 //   defined by the CMake target when it links OpenBLAS), OpenBLAS is asked
 //   for one thread while the subtrees are factored (`Single_threaded_blas`),
 //   and its previous number of threads is given back afterwards. This is a
 //   process-wide setting: another thread of the program that calls OpenBLAS
-//   during that phase runs it on one thread. It is the fastest (Eigen's
-//   kernels below cost 4 to 11% more of the whole computation, benchmark's
-//   README);
+//   during that phase runs it on one thread. It is the faster of the two
+//   (the benchmark's README);
 // - otherwise the subtrees use the same kernels written with Eigen
 //   (`Eigen_dense_kernels`), which always run on the calling thread, and
 //   nothing outside the package changes.
