@@ -42,9 +42,9 @@ typedef Eigen::SparseMatrix<double> Real_sparse_matrix;
 // A real symmetric positive definite sparse matrix, factored once (CHOLMOD's
 // supernodal Cholesky factorization when the package uses CHOLMOD, Eigen's
 // simplicial one otherwise), then solved for any number of right-hand sides.
-// CHOLMOD's factorization calls the BLAS, so it follows the discipline of the
-// package's own (dense_kernels.h): one such factorization at a time in the
-// process (the same digits whatever else runs), and only where the BLAS's
+// CHOLMOD's factorization and solves call the BLAS, so they follow the
+// discipline of the package's own factorization (dense_kernels.h): one at a
+// time in the process (the same digits whatever else runs), and only where the BLAS's
 // work buffers fit in the address space; otherwise Eigen's simplicial
 // factorization runs, and a shortage of memory is std::bad_alloc, not a hang.
 class Factored_real_matrix
@@ -98,10 +98,14 @@ public:
     m_blas_solver = factored<Blas_solver>(S);
   }
 
+  // CHOLMOD's solve calls the BLAS too: under the same lock, so that its
+  // digits do not depend on what other threads do meanwhile.
   Eigen::VectorXd solve(const Eigen::VectorXd& B) const
   {
     if(m_size == 0) return B;
-    return m_blas_solver ? solved(*m_blas_solver, B) : solved(*m_simplicial_solver, B);
+    if(!m_blas_solver) return solved(*m_simplicial_solver, B);
+    std::lock_guard<std::mutex> exclusive(blas_factorization_lock());
+    return solved(*m_blas_solver, B);
   }
 };
 
