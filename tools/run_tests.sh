@@ -22,7 +22,7 @@ if [ -f "$cgal6/lib/cmake/CGAL/CGALConfig.cmake" ]; then
   start=$(date +%s)
   cmake -S . -B build-cgal6 -DCMAKE_BUILD_TYPE=Release -DSMDF_BUILD_TESTS=ON \
         -DCGAL_DIR="$(cd "$cgal6" && pwd)" -DSMDF_REFERENCE_PROGRAM="$PWD/build/bin/direction_field" \
-        -DSMDF_TESTS_WITHOUT_CGAL=OFF
+        -DSMDF_TESTS_WITHOUT_CGAL=OFF -DSMDF_HEADER_ONLY_CONSUMER=OFF
   cmake --build build-cgal6 -j "$jobs"
   (cd build-cgal6 && ctest --output-on-failure -j "$jobs" -LE program)
   echo "== CGAL 6.1.1 build and tests: $(( $(date +%s) - start )) s"
