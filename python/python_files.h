@@ -54,15 +54,20 @@ SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, 
 // a regular file under a unique temporary name renamed when complete (no
 // partial file on any failure), a device or a pipe written directly, a
 // symbolic link written through; the process's signal handlers untouched.
-void write_file(const std::string& path, const std::function<void(std::ostream&)>& write)
+// `write` returns false when it wrote nothing that a reader could take back
+// (a .vtu with no point): the file is then left out as the program leaves it
+// out (output_files.h), and write_file() returns false.
+bool write_file(const std::string& path, const std::function<bool(std::ostream&)>& write)
 {
   if(path.empty()) refuse_file("the file name is empty");
   try
   {
     Output_files files(false);
     files.add("path", path, Input_files());
-    write(files.stream(path));
+    const bool written = write(files.stream(path));
+    if(!written) files.leave_out(path);
     files.commit();
+    return written;
   }
   catch(const Output_error& e) { refuse_file(e.what()); }
 }
@@ -81,21 +86,29 @@ void crosses_only(const SMDF::Direction_field_data& d, const char* format)
 void bind_files(py::module_& m)
 {
   py::register_exception<File_error>(m, "FileError", PyExc_OSError);
-  typedef std::function<void(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
+  typedef std::function<bool(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
   const std::pair<const char*, Writer> writers[] = {
     {"write_vtk", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(is_vtu(path)) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d); }},
+       if(is_vtu(path)) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d);
+       return true; }},
     {"write_vtk_singularities", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(is_vtu(path)) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d); }},
-    {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) { SMDF::IO::write_PLY(os, d); }},
+       if(is_vtu(path) && d.singularities.empty()) return false;  // meshio reads no .vtu without points
+       if(is_vtu(path)) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d);
+       return true; }},
+    {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+       SMDF::IO::write_PLY(os, d);
+       return true; }},
     {"write_rosy", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
        crosses_only(d, "rosy");
-       SMDF::IO::write_rosy(os, d); }},
+       SMDF::IO::write_rosy(os, d);
+       return true; }},
     {"write_ffield", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
        crosses_only(d, "ffield");
-       SMDF::IO::write_ffield(os, d); }},
+       SMDF::IO::write_ffield(os, d);
+       return true; }},
     {"write_singularity_list", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
-       SMDF::IO::write_singularities(os, d); }}};
+       SMDF::IO::write_singularities(os, d);
+       return true; }}};
   for(const auto& w : writers)
   {
     const Writer writer = w.second;
@@ -104,11 +117,13 @@ void bind_files(py::module_& m)
             const std::string path = path_argument(path_object);
             const SMDF::Direction_field_data data = field_data(V, F, result);
             py::gil_scoped_release release;
-            write_file(path, [&](std::ostream& os) { writer(os, data, path); });
+            return write_file(path, [&](std::ostream& os) { return writer(os, data, path); });
           },
           py::arg("path"), py::arg("V"), py::arg("F"), py::arg("result"),
           "Writes the field of `result` (computed on V, F) as the command-line program's option of the same "
-          "name does (write_vtk: .vtk or .vtu by the name). Raises OSError if the file cannot be written.");
+          "name does (write_vtk: .vtk or .vtu by the name). Returns True, or False when nothing was written "
+          "(write_vtk_singularities to a .vtu for a field without singularities: meshio reads no .vtu without "
+          "points; an older file of that name is removed). Raises OSError if the file cannot be written.");
   }
 }
 

@@ -135,6 +135,22 @@ void read_prescribed(const py::object& value, const Mesh& mesh, Options& o)
   o.prescribed = std::move(faces);
 }
 
+// prescribed_loop_turns = m x 2 (loop, turns), as Result.loop_turns gives them
+void read_loop_turns(const py::object& value, Options& o)
+{
+  const Index_array p = index_rows(value, 2, "prescribed_loop_turns");
+  const auto r = p.unchecked<2>();
+  std::vector<std::pair<std::size_t, int> > turns;
+  for(py::ssize_t i = 0; i < p.shape(0); ++i)
+  {
+    if(r(i, 0) < 0) refuse("prescribed_loop_turns row " + std::to_string(i) + ": loop " + std::to_string(r(i, 0)) +
+                           " is not a loop of the mesh");
+    if(std::abs(r(i, 1)) > 1000000) refuse("prescribed_loop_turns row " + std::to_string(i) + ": turns out of range");
+    turns.emplace_back(static_cast<std::size_t>(r(i, 0)), static_cast<int>(r(i, 1)));
+  }
+  o.loop_turns = std::move(turns);
+}
+
 void read_enumerations(const py::dict& kw, Options& o)
 {
   typedef SMDF::Principal_curvature_alignment A;
@@ -154,7 +170,7 @@ void read_enumerations(const py::dict& kw, Options& o)
 
 const char* const option_names[] = {"degree", "s", "align", "curvature_estimate", "boundary", "guidance",
                                     "alignment_weight", "lambda_t", "eigenvalue_bound", "constraints",
-                                    "feature_edges", "feature_angle", "prescribed", "max_iterations", "tolerance",
+                                    "feature_edges", "feature_angle", "prescribed", "prescribed_loop_turns", "max_iterations", "tolerance",
                                     "seed"};
 
 // The keyword arguments of compute() (an unknown one is a TypeError, as Python's own).
@@ -189,6 +205,12 @@ Options read_options(const py::dict& kw, Mesh& mesh)
     o.feature_angle = angle;
   }
   if(given("prescribed")) read_prescribed(kw["prescribed"], mesh, o);
+  if(given("prescribed_loop_turns"))
+  {
+    if(!o.prescribed) refuse("prescribed_loop_turns applies with prescribed only (the smoothest and aligned fields "
+                             "choose their own turns)");
+    read_loop_turns(kw["prescribed_loop_turns"], o);
+  }
   if(kw.contains("max_iterations")) o.max_iterations = count_option(kw["max_iterations"], "max_iterations");
   if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
   if(kw.contains("seed")) o.seed = count_option(kw["seed"], "seed");
@@ -231,6 +253,8 @@ void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
 template <typename Call, typename NP>
 SMDF::Direction_field_result with_prescribed(const Call& call, const Options& o, const Maps&, const NP& np)
 {
+  if(o.prescribed && o.loop_turns)
+    return call(np.prescribed_singularities(*o.prescribed).prescribed_loop_turns(*o.loop_turns));
   if(o.prescribed) return call(np.prescribed_singularities(*o.prescribed));
   return call(np);
 }

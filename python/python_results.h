@@ -9,7 +9,7 @@ namespace {
 struct Result
 {
   py::array_t<double> directions, magnitudes;
-  py::array_t<long long> singular_faces;
+  py::array_t<long long> singular_faces, loop_turns;
   std::vector<double> eigenvalues;
   SMDF::Direction_field_result report;
 };
@@ -54,6 +54,14 @@ Result make_result(Field_values values)
   {
     s(static_cast<py::ssize_t>(i), 0) = static_cast<long long>(singular[i].first);
     s(static_cast<py::ssize_t>(i), 1) = singular[i].second;
+  }
+  const auto& turns = values.report.loop_turns;
+  r.loop_turns = py::array_t<long long>({static_cast<py::ssize_t>(turns.size()), py::ssize_t(2)});
+  auto t = r.loop_turns.mutable_unchecked<2>();
+  for(std::size_t i = 0; i < turns.size(); ++i)
+  {
+    t(static_cast<py::ssize_t>(i), 0) = static_cast<long long>(turns[i].first);
+    t(static_cast<py::ssize_t>(i), 1) = turns[i].second;
   }
   for(const auto& c : values.report.components) r.eigenvalues.push_back(c.eigenvalue);
   r.report = std::move(values.report);
@@ -150,6 +158,9 @@ void bind_result(py::module_& m)
     .def_readonly("magnitudes", &Result::magnitudes, "|u| per vertex before normalization, shape (|V|,)")
     .def_readonly("singular_faces", &Result::singular_faces,
                   "shape (k, 2): face, k for each singular face (index k / n)")
+    .def_readonly("loop_turns", &Result::loop_turns,
+                  "shape (m, 2): loop, turns for each loop along which the field turns other than the nearest "
+                  "choice (give it back as prescribed_loop_turns with singular_faces as prescribed)")
     .def_readonly("eigenvalues", &Result::eigenvalues, "the smallest eigenvalue per component (nan if not computed)")
     .def_property_readonly("degree", [](const Result& r) { return r.report.degree; })
     .def_property_readonly("iterations", [](const Result& r) { return r.report.iterations; })
@@ -186,6 +197,8 @@ const char* const compute_doc =
   "  boundary=None       'tangent' or 'normal': one direction along the boundary\n"
   "  feature_edges=None  (E, 2) vertex pairs, or feature_angle=DEG: sharp edges to follow (even n)\n"
   "  prescribed=None     (k, 2) face, k: place the singularities (index k / n)\n"
+  "  prescribed_loop_turns=None   (m, 2) loop, turns: with prescribed, the field's turns along the mesh's loops\n"
+  "                      (Result.loop_turns gives a field's own)\n"
   "  max_iterations=1000, tolerance=1e-10, seed=0   the eigen-solve\n"
   "Raises ValueError (InvalidInputError) for bad input, RuntimeError (SolverFailureError) if a solve fails.";
 

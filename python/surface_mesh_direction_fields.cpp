@@ -101,6 +101,7 @@ struct Options
   bool has_features = false;
   std::optional<double> feature_angle;
   std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
+  std::optional<std::vector<std::pair<std::size_t, int> > > loop_turns;
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
   unsigned int seed = 0;

@@ -6,6 +6,10 @@
 // on that object: one singularity moved to a neighbouring face and back.
 // Rows alternate the three, `--repeat R` times; medians are printed, and the
 // ratio edit / smoothest (the editing target: <= 0.1 at 400,000 faces).
+// Last, a dense random prescription (the field's own singular faces plus
+// one +1 and one -1 per 50 faces, at random): its refusal (or, rarely, its
+// field) against an accepted edit (the target: at most an edit's time plus
+// a local check).
 //
 //   usage: benchmark_prescription [--degree N] [--repeat R] [MESH...]
 // With no mesh: nefertiti.off and nefertiti_sub4.off of ../shared/data/meshes.
@@ -18,6 +22,7 @@
 #include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,13 +57,33 @@ static Face_index free_neighbour(const Mesh& mesh, Face_index f, const Singulari
   return f;
 }
 
+// The field's own singular faces and, on one face in 25 of the others, +1
+// and -1 in turn (the sum unchanged), drawn with `seed`.
+static Singularities dense_random(const Mesh& mesh, const Singularities& own, unsigned int seed)
+{
+  std::vector<unsigned char> taken(mesh.number_of_faces(), 0);
+  for(const auto& fk : own) taken[std::size_t(fk.first)] = 1;
+  Singularities s = own;
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<std::size_t> face(0, mesh.number_of_faces() - 1);
+  for(std::size_t i = 0; i < mesh.number_of_faces() / 25; ++i)
+  {
+    const std::size_t f = face(random);
+    if(taken[f]) continue;
+    taken[f] = 1;
+    s.emplace_back(Face_index(static_cast<Mesh::size_type>(f)), i % 2 == 0 ? 1 : -1);
+  }
+  if((s.size() - own.size()) % 2 == 1) s.pop_back();
+  return s;
+}
+
 static void run(const std::string& path, int degree, int repeat)
 {
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh)) { std::cerr << "cannot read " << path << "\n"; return; }
   auto dir = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:direction").first;
-  std::vector<double> smoothest, first, edit;
-  std::size_t edits_exact = 0, edits = 0;
+  std::vector<double> smoothest, first, edit, dense;
+  std::size_t edits_exact = 0, edits = 0, refusals = 0;
   for(int r = 0; r < repeat; ++r)
   {
     Singularities s;
@@ -95,12 +120,18 @@ static void run(const std::string& path, int degree, int repeat)
         moved[i].first = from;
       }
     }
+    start = std::chrono::steady_clock::now();
+    try { field.compute(dir, params::degree(degree).prescribed_singularities(dense_random(mesh, s, r))); }
+    catch(const SMDF::Invalid_input_error&) { ++refusals; }
+    dense.push_back(milliseconds_since(start));
   }
   const double ratio = median(edit) / median(smoothest);
   std::printf("%-24s %8zu faces  smoothest %8.1f ms  first prescription %8.1f ms  edit %7.1f ms  edit/smoothest %.3f"
               "  (%zu of %zu edits exact)\n",
               path.substr(path.find_last_of('/') + 1).c_str(), static_cast<std::size_t>(mesh.number_of_faces()),
               median(smoothest), median(first), median(edit), ratio, edits_exact, edits);
+  std::printf("%-24s dense random prescription %8.1f ms (%.2f edits; %zu of %d refused)\n", "",
+              median(dense), median(dense) / median(edit), refusals, repeat);
 }
 
 int main(int argc, char** argv)

@@ -154,6 +154,21 @@ def test_prescribed_singularities():
         smdf.compute_globally_optimal_directions(V, F, degree=4, prescribed=np.array([[0, 1]]))
 
 
+@pytest.mark.parametrize("name,degree", [("fertility.off", 4), ("eight.off", 100)])
+def test_a_field_given_back_with_its_loop_turns(shared, name, degree):
+    V, F, _ = smdf.read_mesh(os.path.join(shared, name))
+    field = smdf.DirectionField(V, F)
+    first = field.compute(degree=degree)
+    assert first.loop_turns.shape[1] == 2 and len(first.loop_turns) > 0
+    back = field.compute(degree=degree, prescribed=first.singular_faces, prescribed_loop_turns=first.loop_turns)
+    assert np.array_equal(back.singular_faces, first.singular_faces)
+    assert np.array_equal(back.loop_turns, first.loop_turns)
+    with pytest.raises(ValueError, match="prescribed"):
+        field.compute(degree=degree, prescribed_loop_turns=first.loop_turns)
+    with pytest.raises(ValueError, match="names loop"):
+        field.compute(degree=degree, prescribed=first.singular_faces, prescribed_loop_turns=np.array([[10**6, 1]]))
+
+
 def test_class_reuses_and_matches_fresh_calls():
     V, F = sphere()
     field = smdf.DirectionField(V, F)
@@ -350,6 +365,18 @@ def test_writers_write_the_programs_files(program, shared, tmp_path, writer, opt
     subprocess.run([program, mesh, option, str(theirs), "--quiet"], check=True, capture_output=True)
     assert ours.read_bytes() == theirs.read_bytes()
     assert sorted(os.listdir(tmp_path)) == sorted(["py_" + name, "cli_" + name])
+
+
+def test_markers_of_a_field_without_singularities(tmp_path):
+    V, F = torus()
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4, prescribed=np.zeros((0, 2), dtype=np.int64))
+    assert len(r.singular_faces) == 0
+    older = tmp_path / "s.vtu"
+    older.write_text("an older file")
+    assert smdf.write_vtk_singularities(str(older), V, F, r) is False  # meshio reads no .vtu without points
+    assert os.listdir(tmp_path) == []
+    assert smdf.write_vtk_singularities(str(tmp_path / "s.vtk"), V, F, r) is True
+    assert smdf.write_vtk(str(tmp_path / "f.vtu"), V, F, r) is True
 
 
 def test_writers_refuse(tmp_path):

@@ -415,6 +415,29 @@ subprocess.run([binary, mesh, "--prescribe", out + "/edited.txt", "--singulariti
                check=True, stdout=subprocess.DEVNULL)
 assert open(out + "/edited_sing.txt").read() == open(out + "/edited.txt").read()
 EOF2
+# 7c. Surfaces with handles: the file --singularities writes has '# loop l t'
+# lines where the field turns other than the nearest choice, and given back
+# it reproduces the singularities at every degree tried (eight: genus 2,
+# fertility: genus 4, torus_oded; n = 100 needs the shortest-path rotation).
+if [ -n "$shared" ] && [ -f "$shared/eight.off" ]; then
+  loops=0
+  for mesh_and_n in eight:3 eight:4 eight:100 fertility:4 fertility:7 torus_oded:5 torus_oded:100; do
+    mesh=${mesh_and_n%%:*}
+    n=${mesh_and_n##*:}
+    "$bin" "$shared/$mesh.off" --degree "$n" --singularities "$out/rt_sing.txt" --json > "$out/rt.json"
+    "$bin" "$shared/$mesh.off" --degree "$n" --prescribe "$out/rt_sing.txt" --singularities "$out/rt_again.txt" \
+      --json > "$out/rt_again.json"
+    check "$mesh, n = $n: --singularities then --prescribe gives the same file" cmp -s "$out/rt_sing.txt" "$out/rt_again.txt"
+    check "$mesh, n = $n: the JSON's loop_turns are the file's loop lines" python_checks "$out/rt.json" "$out/rt_sing.txt" <<'EOF2'
+import json, sys
+turns = json.load(open(sys.argv[1]))["loop_turns"]
+lines = [l.split()[2:] for l in open(sys.argv[2]) if l.startswith("# loop ")]
+assert turns == [[int(l), int(t)] for l, t in lines], (turns, lines)
+EOF2
+    loops=$((loops + $(grep -c '^# loop ' "$out/rt_sing.txt")))
+  done
+  check "some of these fields turn other than the nearest choice ($loops loop lines)" test "$loops" -gt 0
+fi
 printf '0 1\n1 1\n2 1\n3 1\n4 1\n5 1\n6 1\n7 1\n' > "$out/oct_all.txt"
 "$bin" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --singularities "$out/oct_all_sing.txt" > /dev/null
 check "--prescribe: +1/4 on each face of the octahedron" cmp -s "$out/oct_all.txt" "$out/oct_all_sing.txt"
@@ -423,6 +446,9 @@ printf '0 1\n99 1\n' > "$out/p_range.txt"
 printf '0 1\n3 1\n0 1\n' > "$out/p_twice.txt"
 printf '0 1 2\n' > "$out/p_three.txt"
 printf '0 1\n1 1\n' > "$out/p_seven.txt"
+printf '+1 1\n' > "$out/p_plus_face.txt"
+printf '0 1\n# loop 0 1\n#loop 0 -1\n' > "$out/p_loop_twice.txt"
+printf '0 1\n# loop 0\n' > "$out/p_loop_short.txt"
 : > "$out/p_empty.txt"
 
 # 8. Bad input: non-zero status, exactly one line on stderr, nothing on stdout.
@@ -462,12 +488,22 @@ bad "--prescribe: a face out of range" "$out/octahedron.off" --prescribe "$out/p
 bad "--prescribe: a face twice" "$out/octahedron.off" --prescribe "$out/p_twice.txt"
 bad "--prescribe: three numbers" "$out/octahedron.off" --prescribe "$out/p_three.txt"
 bad "--prescribe: Poincare-Hopf violated" "$out/octahedron.off" --prescribe "$out/p_seven.txt"
+bad "--prescribe: a face with a sign" "$out/octahedron.off" --prescribe "$out/p_plus_face.txt"
+bad "--prescribe: a loop twice" "$out/octahedron.off" --prescribe "$out/p_loop_twice.txt"
+bad "--prescribe: a loop line without turns" "$out/octahedron.off" --prescribe "$out/p_loop_short.txt"
 bad "--prescribe: nothing on a sphere" "$out/octahedron.off" --prescribe "$out/p_empty.txt"
 bad "--prescribe: missing file" "$out/octahedron.off" --prescribe "$out/no_such_prescription.txt"
 bad "--prescribe with --lambda" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --align curvature --lambda 0
 bad "--prescribe as an output" "$out/octahedron.off" --prescribe "$out/oct_all.txt" --singularities "$out/oct_all.txt"
 grep -q "line 2 of .*p_fraction.txt" <("$bin" "$out/octahedron.off" --prescribe "$out/p_fraction.txt" 2>&1)
 check "--prescribe: the bad line is named" test $? -eq 0
+# errors name the file's faces: face 4 of a grid of quads is triangles 8 and 9 of the mesh
+printf 'OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n4 0 1 4 3\n4 1 2 5 4\n4 3 4 7 6\n4 4 5 8 7\n' \
+  > "$out/quads.off"
+printf '3 2\n' > "$out/p_quad.txt"
+grep -q "^direction_field: error: face 3 of the file cannot hold index 2/4" \
+  <("$bin" "$out/quads.off" --prescribe "$out/p_quad.txt" 2>&1)
+check "--prescribe: an error names the file's face, not the triangle" test $? -eq 0
 grep -q "add up to 2, but Poincare-Hopf requires n chi = 4 \* 2 = 8" <("$bin" "$out/octahedron.off" --prescribe "$out/p_seven.txt" 2>&1)
 check "--prescribe: both sums named" test $? -eq 0
 

@@ -160,4 +160,26 @@ for ext in ["off", "obj", "ply"]:
     check(open(os.path.join(OUT, "a.rosy")).read() == open(os.path.join(OUT, "b.rosy")).read(),
           "--mesh-out ." + ext + ": the same per-face field")
 
+# A field without singularities (a flat square): the markers in legacy .vtk
+# are a dataset without points that meshio and VTK read; a .vtu without
+# points meshio cannot read, so it is left out, an older file of that name
+# removed, and the JSON says so.
+square = os.path.join(OUT, "square.off")
+with open(square, "w") as f:
+    f.write("OFF\n16 18 0\n" + "".join("%d %d 0\n" % (i, j) for j in range(4) for i in range(4)))
+    for j in range(3):
+        for i in range(3):
+            a = 4 * j + i
+            f.write("3 %d %d %d\n3 %d %d %d\n" % (a, a + 1, a + 5, a, a + 5, a + 4))
+stale = os.path.join(OUT, "square_sing.vtu")
+open(stale, "w").write("an older file")
+d = run([square, "--vtk-singularities", stale])
+check(d is not None and d["singular_faces"] == 0 and d["outputs_left_out"] == ["--vtk-singularities"] and
+      not os.path.exists(stale), "no singularity: the .vtu markers are left out, the older file removed, the JSON says so")
+d = run([square, "--vtk-singularities", os.path.join(OUT, "square_sing.vtk")])
+m = meshio.read(os.path.join(OUT, "square_sing.vtk"))
+check(d is not None and d["outputs_left_out"] == [] and len(m.points) == 0 and
+      vtk_read(os.path.join(OUT, "square_sing.vtk")).GetNumberOfPoints() == 0,
+      "no singularity: meshio and VTK read the .vtk markers without points")
+
 check.finish()

@@ -70,7 +70,8 @@ inline const Option_help option_help[] = {
   {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
   {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
   {"Field", "--prescribe FILE", "place the singularities: one 'f k' per singular face of MESH (index k/n; the "
-                                  "format --singularities writes; faces not listed have index 0). The field is then "
+                                  "format --singularities writes, with its '# loop l t' lines; faces not listed have "
+                                  "index 0). The field is then "
                                   "the parallel one with exactly these singular faces (s has no effect; --align, "
                                   "--guidance or one constrained direction choose its rotation). On a closed mesh "
                                   "the k must add up to n times the Euler characteristic"},
@@ -86,7 +87,8 @@ inline const Option_help option_help[] = {
   {"Alignment", "--curvature-estimate HOW", "quadric-fit (default) or hopf (the paper's Hopf differential)"},
   {"Alignment", "--eigenvalue-bound", "also compute lambda_1 for aligned fields (the JSON's eigenvalue_bound)"},
   {"Outputs", "--directions FILE", "one 'x y z' per vertex of MESH, in its order (17 significant digits)"},
-  {"Outputs", "--singularities FILE", "one 'f k' per singular face of MESH (index k/n)"},
+  {"Outputs", "--singularities FILE", "one 'f k' per singular face of MESH (index k/n), then one '# loop l t' per "
+                                       "loop along which the field turns t times other than the nearest choice"},
   {"Outputs", "--json", "one line of JSON on stdout instead of the summary (keys: direction_field/README.md)"},
   {"Outputs", "--json-file FILE", "the same line of JSON in FILE"},
   {"Outputs", "--png FILE", "a picture: the shaded mesh from four sides, the field, the singularities, a legend"},

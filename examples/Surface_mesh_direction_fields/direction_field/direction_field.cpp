@@ -48,6 +48,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -109,10 +110,57 @@ std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>&
   return guidance;
 }
 
-// --prescribe: 'f k' per line, f a face of the file, k an integer (blank
-// lines skipped), each face once; a polygon's k goes to its first triangle.
-// Returns the (face, k) of the repaired mesh.
-std::vector<std::pair<Face_index, int> > read_prescription(const Options& o, const Repaired_mesh<Mesh>& input)
+// --prescribe, as --singularities writes it: 'f k' per singular face of the
+// file, '# loop l t' per loop along which the field turns t times other than
+// the nearest choice (a comment to readers of 'f k' lines, numpy.loadtxt's
+// included), each face and loop once; blank lines and other lines starting
+// with '#' are skipped.
+struct Prescription
+{
+  std::vector<std::pair<Face_index, int> > faces;   // of the repaired mesh: a polygon's k on its first triangle
+  std::vector<std::pair<std::size_t, int> > loop_turns;
+};
+
+// A whole token as an integer: digits, with a sign if `signed_number`.
+bool read_integer(const std::string& token, bool signed_number, long long& value)
+{
+  const std::size_t first = signed_number && !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
+  if(token.size() == first || token.size() > first + 18 ||
+     token.find_first_not_of("0123456789", first) != std::string::npos)
+    return false;
+  value = std::stoll(token.substr(first)) * (token[0] == '-' ? -1 : 1);
+  return true;
+}
+
+// One line 'f k' or '# loop l t' into k_of_file_face or loop_turns (other comments skipped).
+void read_prescription_line(const std::string& line, const std::string& where, std::size_t file_faces,
+                            std::map<std::size_t, int>& k_of_file_face, std::map<std::size_t, int>& loop_turns)
+{
+  std::istringstream is(line);
+  std::string first, second, rest;
+  if(!(is >> first)) return;  // white space only
+  const bool comment = first[0] == '#';
+  if(comment && first.size() > 1) first.erase(0, 1);  // "#loop"
+  else if(comment && !(is >> first)) return;
+  const bool loop = comment && first == "loop";
+  if(comment && !loop) return;
+  if(loop) is >> first;
+  is >> second;
+  long long element, k;
+  if(!read_integer(first, false, element) || !read_integer(second, true, k) || (is >> rest))
+    throw Usage_error(where + " is not 'f k' (a face and its index, two integers) or '# loop l t'");
+  if(k < -1000000 || k > 1000000) throw Usage_error(where + ": " + std::to_string(k) + " is out of range");
+  if(loop && !loop_turns.emplace(std::size_t(element), int(k)).second)
+    throw Usage_error(where + ": loop " + std::to_string(element) + " is listed twice");
+  if(loop) return;
+  if(static_cast<unsigned long long>(element) >= file_faces)
+    throw Usage_error(where + ": face " + std::to_string(element) + " is not a face of the mesh (it has " +
+                      std::to_string(file_faces) + ")");
+  if(!k_of_file_face.emplace(std::size_t(element), int(k)).second)
+    throw Usage_error(where + ": face " + std::to_string(element) + " is listed twice");
+}
+
+Prescription read_prescription(const Options& o, const Repaired_mesh<Mesh>& input)
 {
   std::istringstream in(text_file(o.prescribe, "a prescription file"));
   std::vector<Face_index> first_triangle(input.file_faces, Face_index());
@@ -121,30 +169,46 @@ std::vector<std::pair<Face_index, int> > read_prescription(const Options& o, con
     Face_index& first = first_triangle[input.file_face_of_face[std::size_t(f)]];
     if(first == Face_index()) first = f;
   }
-  std::map<std::size_t, int> k_of_file_face;
+  std::map<std::size_t, int> k_of_file_face, loop_turns;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number)
   {
     if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream is(line);
-    long long f, k;
-    std::string rest;
     const std::string where = "line " + std::to_string(number) + " of '" + o.prescribe + "'";
-    if(!(is >> f >> k) || (is >> rest))
-      throw Usage_error(where + " is not two integers 'f k'");
-    if(f < 0 || static_cast<unsigned long long>(f) >= input.file_faces)
-      throw Usage_error(where + ": face " + std::to_string(f) + " is not a face of the mesh (it has " +
-                        std::to_string(input.file_faces) + ")");
-    if(k < -1000000 || k > 1000000) throw Usage_error(where + ": index " + std::to_string(k) + " is out of range");
-    if(!k_of_file_face.emplace(std::size_t(f), int(k)).second)
-      throw Usage_error(where + ": face " + std::to_string(f) + " is listed twice");
-    if(k != 0 && first_triangle[std::size_t(f)] == Face_index())
-      throw Usage_error(where + ": face " + std::to_string(f) + " was removed by the repair (degenerate or repeated)");
+    read_prescription_line(line, where, input.file_faces, k_of_file_face, loop_turns);
   }
-  std::vector<std::pair<Face_index, int> > prescription;
+  Prescription prescription;
   for(const auto& fk : k_of_file_face)
-    if(fk.second != 0) prescription.emplace_back(first_triangle[fk.first], fk.second);
+  {
+    if(fk.second == 0) continue;
+    if(first_triangle[fk.first] == Face_index())
+      throw Usage_error("face " + std::to_string(fk.first) + " of '" + o.prescribe +
+                        "' was removed by the repair (degenerate or repeated)");
+    prescription.faces.emplace_back(first_triangle[fk.first], fk.second);
+  }
+  prescription.loop_turns.assign(loop_turns.begin(), loop_turns.end());
   return prescription;
+}
+
+// An error of the library about faces of the repaired mesh ("face 12"),
+// naming the file's faces instead (the numbering of --prescribe and
+// --singularities).
+std::string in_file_numbering(const SMDF::Invalid_input_error& e, const Repaired_mesh<Mesh>& input)
+{
+  const std::string what = e.what();
+  if(!e.has_face()) return what;
+  static const std::regex mesh_face("face ([0-9]{1,18})");
+  std::string named;
+  std::size_t done = 0;
+  for(auto it = std::sregex_iterator(what.begin(), what.end(), mesh_face); it != std::sregex_iterator(); ++it)
+  {
+    const std::size_t f = std::stoull((*it)[1].str());
+    if(f >= input.file_face_of_face.size()) continue;
+    named += what.substr(done, static_cast<std::size_t>(it->position()) - done) + "face " +
+             std::to_string(input.file_face_of_face[f]) + " of the file";
+    done = static_cast<std::size_t>(it->position() + it->length());
+  }
+  return named + what.substr(done);
 }
 
 // --solver petsc: MPI, PETSc and SLEPc for the whole run. The first process
@@ -261,19 +325,26 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
     (void)processes;
     return with_features(np);
   };
-  const std::vector<std::pair<Face_index, int> > prescription =
-    o.prescribe.empty() ? std::vector<std::pair<Face_index, int> >() : read_prescription(o, input);
+  const Prescription prescription = o.prescribe.empty() ? Prescription() : read_prescription(o, input);
   auto with_prescription = [&](auto np) {
     if(o.prescribe.empty()) return with_solver(np);
-    return with_features(np.prescribed_singularities(prescription));  // one process (checked)
+    return with_features(  // one process (checked)
+      np.prescribed_singularities(prescription.faces).prescribed_loop_turns(prescription.loop_turns));
   };
   auto with_guidance = [&](auto np) {
     if(o.guidance.empty()) return with_prescription(np);
     return with_prescription(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
   };
   // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
-  field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))
-                 : o.lambda_given ? with_guidance(base.alignment_lambda(o.lambda)) : with_guidance(base);
+  try
+  {
+    field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))
+                   : o.lambda_given ? with_guidance(base.alignment_lambda(o.lambda)) : with_guidance(base);
+  }
+  catch(const SMDF::Invalid_input_error& e)
+  {
+    throw Usage_error(in_file_numbering(e, input));
+  }
 }
 
 // --directions and --singularities, in the order of the file's vertices and faces.
@@ -304,6 +375,7 @@ void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input
     std::ostream& os = outputs.stream(o.singularities);
     for(const auto& fk : index_of_file_face)
       if(fk.second != 0) os << fk.first << " " << fk.second << "\n";
+    for(const auto& lt : field.result.loop_turns) os << "# loop " << lt.first << " " << lt.second << "\n";
   }
 }
 
@@ -365,10 +437,10 @@ void report_computation(const Progress& progress, const SMDF::Direction_field_re
 
 // The summary or the JSON on stdout, checked.
 void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
-                  const Program_timings& timings, int ranks)
+                  const Left_out_outputs& left_out, const Program_timings& timings, int ranks)
 {
-  if(o.json) write_json(std::cout, o, input, r, timings, ranks);
-  else write_summary(std::cout, o, input, r, timings, ranks);
+  if(o.json) write_json(std::cout, o, input, r, left_out, timings, ranks);
+  else write_summary(std::cout, o, input, r, left_out, timings, ranks);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
@@ -448,10 +520,10 @@ static int run(int argc, char** argv)
     progress.end();
     if(!o.json_file.empty())
     {
-      write_json(outputs.stream(o.json_file), o, input, field.result, timings, processes.size());
+      write_json(outputs.stream(o.json_file), o, input, field.result, outputs.left_out(), timings, processes.size());
       outputs.close(o.json_file);
     }
-    write_report(o, input, field.result, timings, processes.size());
+    write_report(o, input, field.result, outputs.left_out(), timings, processes.size());
     outputs.commit();
     return EXIT_SUCCESS;
   }

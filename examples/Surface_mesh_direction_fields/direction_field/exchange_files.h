@@ -173,10 +173,14 @@ write_exchange_files(const Options& o, const Mesh& mesh, const std::vector<Vecto
     if(soup_reading::lower_case_extension(o.vtk) == "vtu") SMDF::IO::write_VTU(outputs.stream(o.vtk), data);
     else SMDF::IO::write_VTK(outputs.stream(o.vtk), data);
   }
-  if(!o.vtk_singularities.empty())
+  // A .vtu with no point is what VTK writes for an empty dataset, but meshio
+  // reads no empty UnstructuredGrid: such an output is left out, and the
+  // summary and the JSON say so (a legacy .vtk with no point is written).
+  const bool vtu_markers = soup_reading::lower_case_extension(o.vtk_singularities) == "vtu";
+  if(!o.vtk_singularities.empty() && vtu_markers && data.singularities.empty()) outputs.leave_out(o.vtk_singularities);
+  else if(!o.vtk_singularities.empty())
   {
-    if(soup_reading::lower_case_extension(o.vtk_singularities) == "vtu")
-      SMDF::IO::write_VTU_singularities(outputs.stream(o.vtk_singularities), data);
+    if(vtu_markers) SMDF::IO::write_VTU_singularities(outputs.stream(o.vtk_singularities), data);
     else SMDF::IO::write_VTK_singularities(outputs.stream(o.vtk_singularities), data);
   }
   if(!o.ply.empty()) SMDF::IO::write_PLY(outputs.stream(o.ply), data);
@@ -185,7 +189,9 @@ write_exchange_files(const Options& o, const Mesh& mesh, const std::vector<Vecto
   if(!o.singularity_list.empty()) SMDF::IO::write_singularities(outputs.stream(o.singularity_list), data);
   if(o.streamlines.empty()) return streamlines;
   streamlines = SMDF::trace_streamlines(data);  // the library's defaults: evenly spaced lines
-  exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), streamlines, data.degree);
+  if(streamlines.empty() && soup_reading::lower_case_extension(o.streamlines) == "vtu")
+    outputs.leave_out(o.streamlines);
+  else exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), streamlines, data.degree);
   return streamlines;
 }
 

@@ -140,6 +140,27 @@ public:
     if(!written || !f.stream) throw Output_error("could not write " + f.option + " '" + f.path + "' (disk full?)");
   }
 
+  // Writes nothing for the output `path` after all (a dataset meshio could
+  // not read back): its temporary file goes, and at commit() an older
+  // regular file of that name goes too, so that no stale result stays under
+  // the name (a device or a pipe is simply not written to).
+  void leave_out(const std::string& path)
+  {
+    File& f = find(path);
+    f.stream.close();
+    if(f.written != f.target) std::remove(f.written.c_str());
+    f.left_out = true;
+  }
+
+  // The options whose outputs were left out, with their paths.
+  std::vector<std::pair<std::string, std::string> > left_out() const
+  {
+    std::vector<std::pair<std::string, std::string> > list;
+    for(const auto& f : files_)
+      if(f->left_out) list.emplace_back(f->option, f->path);
+    return list;
+  }
+
   // Closes every output but `path`, checked.
   void close_all_except(const std::string& path)
   {
@@ -159,6 +180,12 @@ public:
     for(std::size_t i = 0; i < files_.size(); ++i)
     {
       File& f = *files_[i];
+      if(f.left_out)
+      {
+        f.committed = f.written != f.target && !f.older.empty() && ::unlink(f.target.c_str()) == 0;
+        output_files_internal::forget(f.slot);
+        continue;
+      }
       if(f.written != f.target && std::rename(f.written.c_str(), f.target.c_str()) != 0)
       {
         const std::string reason = std::strerror(errno);
@@ -185,6 +212,7 @@ private:
     dev_t device = 0;
     ino_t inode = 0;
     std::string older;      // during commit(): a second link to the older file of that name
+    bool left_out = false;  // leave_out(): nothing written under this name
   };
 
   // The file a symbolic link names (the path itself if it is no link, or if
@@ -239,6 +267,7 @@ private:
   {
     if(f.written == f.target || !f.committed) return;
     if(!f.older.empty() && std::rename(f.older.c_str(), f.target.c_str()) == 0) f.older.clear();
+    else if(f.left_out) {}  // its older file could not be put back: nothing else to undo
     else if(f.older.empty()) std::remove(f.target.c_str());
     f.committed = false;
   }

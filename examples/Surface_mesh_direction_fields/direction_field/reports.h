@@ -16,6 +16,8 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 
@@ -48,8 +50,21 @@ inline const SMDF::Component_report& main_component(const SMDF::Direction_field_
   return r.components[best];
 }
 
+// The outputs asked for but not written (Output_files::left_out()): option and path.
+typedef std::vector<std::pair<std::string, std::string> > Left_out_outputs;
+
+// [[l, t], ...]: the loops along which the field turns other than the nearest choice
+inline std::string loop_turns_json(const SMDF::Direction_field_result& r)
+{
+  std::string text = "[";
+  for(const auto& lt : r.loop_turns)
+    text += (text.size() > 1 ? ",[" : "[") + std::to_string(lt.first) + "," + std::to_string(lt.second) + "]";
+  return text + "]";
+}
+
 template <typename Mesh>
 void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
+                const Left_out_outputs& left_out,
                 const Program_timings& timings, int ranks)
 {
   const Mesh& mesh = input.mesh;
@@ -76,6 +91,9 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"singular_faces\":" << r.number_of_singular_faces << ",\"index_sum\":" << r.index_sum
      << ",\"mollification\":" << number(r.mollification) << ",\"tangent_plane_vertices\":" << r.tangent_plane_vertices
      << ",\"prescribed\":" << (r.prescribed ? "true" : "false") << ",\"holonomy_error\":" << number(r.holonomy_error)
+     << ",\"loop_turns\":" << loop_turns_json(r) << ",\"outputs_left_out\":[";
+  for(std::size_t i = 0; i < left_out.size(); ++i) os << (i ? "," : "") << "\"" << left_out[i].first << "\"";
+  os << "]"
      << ",\"lambda\":" << number(main_component(r).lambda)
      << ",\"alignment_weight\":" << number(main_component(r).alignment_weight)
      << ",\"eigenvalue_bound\":" << number(main_component(r).eigenvalue)
@@ -94,6 +112,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
 
 template <typename Mesh>
 void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const SMDF::Direction_field_result& r,
+                   const Left_out_outputs& left_out,
                    const Program_timings& timings, int ranks)
 {
   const Mesh& mesh = input.mesh;
@@ -122,6 +141,9 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   if(r.prescribed)
     os << "prescribed      the singular faces of " << o.prescribe << " (parallel field, holonomy error "
        << r.holonomy_error << " rad)\n";
+  for(const auto& output : left_out)
+    os << "not written     " << output.first << " " << output.second
+       << ": nothing to show, and meshio reads no .vtu without points (an older file of that name is removed)\n";
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   if(r.tangent_plane_vertices > 0)

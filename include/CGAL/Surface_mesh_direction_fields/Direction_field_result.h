@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -132,6 +133,13 @@ struct Direction_field_result
   /// around a face (against \f$ 2\pi k \f$) or around a loop of the cycle basis (against a multiple
   /// of \f$ 2\pi \f$), after the change of the connection; 0 otherwise
   double holonomy_error = 0.;
+  /// the loops along which the field turns other than the nearest choice, as pairs `(l, t)`: `l` the
+  /// position of the loop in `Globally_optimal_direction_field::prescription_loops()`, `t` how many more
+  /// times the field turns along it, by \f$ 2\pi / n \f$ each (user manual, section \ref SMDF_prescribed).
+  /// Given back as `prescribed_loop_turns`, with the singular faces as `prescribed_singularities`, they give
+  /// this field's singularities back. The longest boundary loop of each component is left out: it turns as
+  /// the indices and the other loops imply.
+  std::vector<std::pair<std::size_t, int> > loop_turns;
   /// wall-clock times
   Direction_field_timings timings;
 };

@@ -222,6 +222,9 @@ public:
         for(const auto& entry : get_parameter(np, internal_np::prescribed_loop_turns))
           request.loop_turns.emplace_back(static_cast<std::size_t>(entry.first), static_cast<long>(entry.second));
     }
+    else if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
+      throw Invalid_input_error("prescribed_loop_turns applies with prescribed_singularities only (the smoothest "
+                                "and aligned fields choose their own turns)");
     // A backend over several processes (Petsc_distributed_solver) for this call.
     auto&& backend = parameters::get_parameter_reference(np, internal_np::distributed_solver);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::distributed_solver_t>::value)

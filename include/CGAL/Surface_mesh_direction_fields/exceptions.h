@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <cstddef>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -63,6 +64,27 @@ public:
   /// constructs the exception.
   /// \param what the message, naming the problem
   explicit Invalid_input_error(const std::string& what) : Direction_field_error(what) {}
+
+  /// constructs the exception for a problem at one face.
+  /// \param what the message, naming the face as `"face " + std::to_string(face)` (once)
+  /// \param face the face's index in the order of the mesh's face index map
+  Invalid_input_error(const std::string& what, std::size_t face)
+    : Direction_field_error(what), m_face(face), m_has_face(true)
+  {
+  }
+
+  /// tells whether the problem is at a face, whose index `face()` gives. `what()` then names
+  /// faces as "face " followed by their index, so that a program that numbers faces otherwise (a
+  /// file's polygons, before a repair) can name them its own way.
+  /// \return `true` for a problem at a face
+  bool has_face() const { return m_has_face; }
+  /// gives the face's index in the order of the mesh's face index map.
+  /// \return the index (0 when `has_face()` is `false`)
+  std::size_t face() const { return m_face; }
+
+private:
+  std::size_t m_face = 0;
+  bool m_has_face = false;
 };
 
 /*!

@@ -150,6 +150,7 @@ public:
 
     // 5. the outputs: singular faces with their indices, unit directions in 3D, magnitudes
     report_indices(face_indices(m_mesh, m_connection, field.coefficients), result, answer);
+    result.loop_turns = loop_turns_of(field.coefficients, result.degree, result.components);
     write_directions(field.coefficients, result.degree, targets.constraints, result, answer);
     answer.magnitudes = std::move(field.magnitudes);
 
@@ -216,10 +217,11 @@ private:
     refuse_with_prescription(request, targets);
     update_connection(result.degree);
     result.timings.setup_ms = milliseconds_since(start);
-    if(!m_adjustment)  // once per mesh: the cycle basis and the factored vertex Laplacian
+    prepare_adjustment();
+    if(!m_adjustment->is_factored())  // once per mesh: the factored vertex Laplacian
     {
       const auto factor_start = Clock::now();
-      prepare_adjustment();
+      m_adjustment->factor(m_mesh, m_tangent_spaces);
       result.timings.factorization_ms = milliseconds_since(factor_start);
     }
     const std::vector<int>& k = request.prescribed_index;
@@ -231,14 +233,9 @@ private:
       result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
       result.components[c].converged = true;
     }
-    check_prescription(m_components, m_connection, result.components, k);
+    check_prescription(m_mesh, m_components, m_connection, result.components, k);
 
-    if(m_transport_angles_degree != result.degree)
-    {
-      m_transport_angles = m_adjustment->transport_angles(m_connection);
-      m_transport_angles_degree = result.degree;
-    }
-    const Eigen::VectorXd& rho = m_transport_angles;
+    const Eigen::VectorXd& rho = transport_angles(result.degree);
     const Eigen::VectorXd x = m_adjustment->solve(m_mesh, m_connection, rho, k, turns.turns);
     check_free_loops(rho, x, turns);
     result.prescribed = true;
@@ -248,8 +245,9 @@ private:
     read_guidance(request, {}, linear_solver, targets, result.timings);
     for(std::size_t c = 0; c < m_components.list.size(); ++c) rotate_component(c, targets, u);
     const std::vector<int> index = face_indices_with_edge_angles(m_mesh, m_connection, m_adjustment->edges(), rho, u);
-    check_prescribed_indices(index, k);
+    check_prescribed_indices(index, k, request.loop_turns.empty());
     report_indices(index, result, answer);
+    result.loop_turns = m_adjustment->turns_of_field(m_mesh, rho, u);
     write_directions(u, result.degree, targets.constraints, result, answer);
     answer.magnitudes.resize(u.size());
     for(std::size_t v = 0; v < u.size(); ++v) answer.magnitudes[v] = std::abs(u[v]);  // 1, 0 at isolated vertices
@@ -260,8 +258,32 @@ private:
 
   void prepare_adjustment()
   {
-    if(!m_adjustment)
-      m_adjustment = std::make_unique<Connection_adjustment>(m_mesh, m_tangent_spaces, m_components);
+    if(!m_adjustment) m_adjustment = std::make_unique<Connection_adjustment>(m_mesh, m_components);
+  }
+
+  // rho_e of the connection of the given degree (updated), per edge
+  const Eigen::VectorXd& transport_angles(int degree)
+  {
+    if(m_transport_angles_degree != degree)
+    {
+      m_transport_angles = m_adjustment->transport_angles(m_connection);
+      m_transport_angles_degree = degree;
+    }
+    return m_transport_angles;
+  }
+
+  // How the field turns along the loops of prescription_loops(): what
+  // prescribed_loop_turns takes to give its singularities back.
+  std::vector<std::pair<std::size_t, int> > loop_turns_of(const std::vector<Complex>& u, int degree,
+                                                          const std::vector<Component_report>& components)
+  {
+    // loops that can be chosen: 2g through the handles and the boundary loops but one, 1 - chi on a
+    // component with boundary, 2 - chi on a closed one; none on spheres and disks (no cycle basis built)
+    long loops = 0;
+    for(const Component_report& c : components) loops += (c.is_closed ? 2 : 1) - c.euler_characteristic;
+    if(loops <= 0) return {};
+    prepare_adjustment();
+    return m_adjustment->turns_of_field(m_mesh, transport_angles(degree), u);
   }
 
   // The turns asked of the loops of prescription_loops() (0 where not asked).
@@ -284,6 +306,9 @@ private:
         throw Invalid_input_error("prescribed_loop_turns names loop " + std::to_string(l) + ", but the mesh has " +
                                   std::to_string(t.turns.size()) + " (see prescription_loops())");
       if(t.asked[l]++) throw Invalid_input_error("prescribed_loop_turns lists loop " + std::to_string(l) + " twice");
+      if(entry.second < -maximum_degree || entry.second > maximum_degree)
+        throw Invalid_input_error("prescribed_loop_turns asks " + std::to_string(entry.second) + " turns of loop " +
+                                  std::to_string(l) + " (at most " + std::to_string(maximum_degree) + " either way)");
       t.turns[l] = static_cast<int>(entry.second);
     }
     return t;
@@ -362,15 +387,21 @@ private:
   // on the vertices can show (singularities in neighbouring faces, or a
   // vertex whose angle defect times n is a full turn or more, as at the
   // corners of a cube, made singularity-free).
-  static void check_prescribed_indices(const std::vector<int>& index, const std::vector<int>& k)
+  // A surface with handles or several boundary loops may need the turns
+  // along its loops as well: the least change with 0 turns can pass pi
+  // along an edge where the field's own turns would not.
+  void check_prescribed_indices(const std::vector<int>& index, const std::vector<int>& k, bool no_turns_given) const
   {
     for(std::size_t f = 0; f < k.size(); ++f)
       if(index[f] != k[f])
-        throw Invalid_input_error("no field on the vertices of this mesh has these singularities: face " +
-                                  std::to_string(f) + " would have index " + std::to_string(index[f]) + " instead of " +
-                                  std::to_string(k[f]) +
-                                  " (the connection would turn by more than pi along an edge: singularities too close "
-                                  "together, or curvature concentrated in a vertex; spread them or refine the mesh)");
+        throw Invalid_input_error(
+          "the field with these singularities would turn by more than pi along an edge of face " + std::to_string(f) +
+          " (index " + std::to_string(index[f]) + " instead of " + std::to_string(k[f]) + "): " +
+          (no_turns_given && m_adjustment->number_of_loops() > 0
+             ? "give the turns along the surface's loops as well (a field's own are in its result's loop_turns), or "
+             : "") +
+          "spread singularities that are close together, or refine the mesh where curvature is concentrated",
+          f);
   }
 
   // Eigenvalues and lambda_t between the user's units and those of the

@@ -28,8 +28,10 @@
 
 #include <cmath>
 #include <complex>
+#include <deque>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 // Fields with prescribed singularities (user manual, section "Placing
@@ -45,6 +47,11 @@
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
+
+// How far below pi the change of the connection stays along every edge, so
+// that the field's rotation there, recomputed from its angles, cannot round
+// to the other side of the half turn (and the local checks ask the same).
+constexpr double half_turn_margin = 1e-9;
 
 // The distance from the centroid of a triangle to the midpoint of side a
 // (a third of the median): the triangle's share of the dual edge.
@@ -98,6 +105,7 @@ class Connection_adjustment
   std::vector<Compact_index> m_unknown;     // the unknown of each vertex in phi (no_index: fixed or isolated)
   Eigen::Index m_unknowns = 0;
   Factored_real_matrix m_laplacian;
+  bool m_factored = false;
 
   std::size_t tail(std::size_t e, const Indexed_mesh& m) const { return m.vertex_of_corner(m_edges.corner_of_edge[e]); }
   std::size_t head(std::size_t e, const Indexed_mesh& m) const
@@ -108,6 +116,7 @@ class Connection_adjustment
   void number_unknowns(const Indexed_mesh& m)
   {
     m_unknown.assign(m.number_of_vertices(), no_index);
+    m_unknowns = 0;
     for(std::size_t v : m_basis.tree_order)
       if(m_basis.parent[v] != no_index) m_unknown[v] = static_cast<std::size_t>(m_unknowns++);
   }
@@ -178,11 +187,20 @@ class Connection_adjustment
   }
 
 public:
-  Connection_adjustment(const Indexed_mesh& m, const Tangent_spaces& ts, const Components& comps)
-    : m_edges(number_edges(m)), m_basis(find_cycle_basis(m, m_edges, comps)), m_weight(dual_edge_weights(m, ts, m_edges))
+  // The cycle basis only: reading a field's loop turns needs no more. The
+  // norm and the factored Laplacian come with factor(), before solve().
+  Connection_adjustment(const Indexed_mesh& m, const Components& comps)
+    : m_edges(number_edges(m)), m_basis(find_cycle_basis(m, m_edges, comps))
   {
+  }
+
+  bool is_factored() const { return m_factored; }
+  void factor(const Indexed_mesh& m, const Tangent_spaces& ts)
+  {
+    m_weight = dual_edge_weights(m, ts, m_edges);
     number_unknowns(m);
     m_laplacian.factor(vertex_laplacian(m));
+    m_factored = true;
   }
 
   const Edge_numbering& edges() const { return m_edges; }
@@ -240,6 +258,30 @@ public:
     return static_cast<int>(std::lround((sum_around(loop(l), x) - loop_change(loop(l), rho)) / (2. * CGAL_PI)));
   }
 
+  // The turns of a field u (a coefficient per vertex) along every loop: its
+  // change of the connection along each edge is its rotation against the
+  // transport, in (-pi, pi] as face_indices() takes it, so that solve() with
+  // u's face indices and these turns gives u's singularities back.
+  // Only the loops whose turns can be chosen and differ from 0 are listed.
+  std::vector<std::pair<std::size_t, int> > turns_of_field(const Indexed_mesh& m, const Eigen::VectorXd& rho,
+                                                           const std::vector<std::complex<double> >& u) const
+  {
+    std::vector<double> theta(u.size());
+    parallel_for_each_index(u.size(), [&](std::size_t v) { theta[v] = std::arg(u[v]); });  // arg(0) = 0
+    Eigen::VectorXd x(rho.size());
+    parallel_for_each_index(m_edges.number_of_edges(), [&](std::size_t e) {
+      const Eigen::Index i = static_cast<Eigen::Index>(e);
+      x[i] = reduce_angle(theta[head(e, m)] - theta[tail(e, m)] - rho[i]);
+    });
+    std::vector<std::pair<std::size_t, int> > turns;
+    for(std::size_t l = 0; l < number_of_loops(); ++l)
+    {
+      const int t = is_free_loop(l) ? 0 : turns_of(l, rho, x);
+      if(t != 0) turns.emplace_back(l, t);
+    }
+    return turns;
+  }
+
   // x for the face indices k (the holonomy Omega_t + sum x = 2 pi k_t in every
   // face) and, around every other loop of the basis, the nearest multiple of
   // 2 pi plus `turns[l]` times 2 pi (missing entries: 0; a free loop's entry
@@ -261,6 +303,7 @@ public:
     Eigen::VectorXd x = particular_change(b_node, b_handle);
     remove_gradient(m, x);
     if(below_half_turn && x.cwiseAbs().maxCoeff() >= largest_change) keep_within_half_turn(m, x);
+    if(below_half_turn && x.cwiseAbs().maxCoeff() >= CGAL_PI - half_turn_margin) fit_below_half_turn(m, x);
     return x;
   }
 
@@ -297,6 +340,46 @@ private:
       const Vertex_region region = rings_around(m, seeds);
       set_rotated_change(m, least_norm, region, local_rotation(m, least_norm, penalty, region), x);
     }
+  }
+
+  // Where the smooth local rotations leave an edge at pi or more, the
+  // rotations phi with |x_e + (d0 phi)_e| <= pi - margin on every edge are
+  // the solutions of a system of difference constraints, phi_w - phi_v <=
+  // c_vw, one per edge and direction: shortest paths from a virtual source
+  // joined to every vertex at length 0 (Bellman-Ford, queued: only the
+  // vertices that change are visited again). A solution exists whenever
+  // some field on the vertices has these singularities (its own change is
+  // one), and then phi is 0 away from the offending edges. When none exists
+  // some cycle keeps lowering phi; the work is bounded and x is left as it
+  // was (the caller then refuses the prescription).
+  void fit_below_half_turn(const Indexed_mesh& m, Eigen::VectorXd& x) const
+  {
+    const double bound = CGAL_PI - half_turn_margin;
+    std::vector<double> phi(m.number_of_vertices(), 0.);
+    std::vector<unsigned char> queued(phi.size(), 0);
+    std::deque<std::size_t> queue;
+    for(std::size_t e = 0; e < m_edges.number_of_edges(); ++e)
+      if(std::abs(x[static_cast<Eigen::Index>(e)]) > bound)
+        for(std::size_t v : {tail(e, m), head(e, m)})
+          if(!queued[v]) { queued[v] = 1; queue.push_back(v); }
+    const std::size_t budget = 64 * m_edges.number_of_edges() + 1000000;
+    std::size_t work = 0;
+    while(!queue.empty())
+    {
+      const std::size_t v = queue.front();
+      queue.pop_front();
+      queued[v] = 0;
+      for_each_edge_at(m, m_edges, v, [&](std::size_t w, std::size_t e, int sign) {
+        ++work;
+        const double limit = phi[v] + bound - sign * x[static_cast<Eigen::Index>(e)];
+        if(phi[w] <= limit) return;
+        phi[w] = limit;
+        if(!queued[w]) { queued[w] = 1; queue.push_back(w); }
+      });
+      if(work > budget) return;
+    }
+    for(std::size_t e = 0; e < m_edges.number_of_edges(); ++e)
+      x[static_cast<Eigen::Index>(e)] += phi[head(e, m)] - phi[tail(e, m)];
   }
 
   // The vertices within `rings` edges of the seed edges: local[v] is v's
@@ -437,18 +520,59 @@ inline std::vector<std::complex<double> > parallel_section(const Cycle_basis& ba
   return u;
 }
 
+// Why face f cannot hold index k/n: the field turns by less than pi along
+// each side, so 2 pi k must be within 3 pi of the face's curvature times n.
+inline std::string unholdable_index_message(std::size_t f, int k, const Connection& con)
+{
+  const std::string face = "face " + std::to_string(f);
+  const std::string turns = compact_number(con.holonomy[f] / (2. * CGAL_PI));
+  // the turns are those of the field's n-th power, u, which the index counts
+  if(k == 0)
+    return face + " is not listed, but a field of degree " + std::to_string(con.degree) + " must have a singularity "
+           "there: its curvature turns the field's n-th power " + turns + " times around it, more than the one and a "
+           "half a face without one can take (list it with an index near that, or lower the degree)";
+  return face + " cannot hold index " + std::to_string(k) + "/" + std::to_string(con.degree) +
+         ": with its curvature the field's n-th power would turn " +
+         compact_number(std::abs(k - con.holonomy[f] / (2. * CGAL_PI))) +
+         " times along its sides, and a field on the vertices turns at most one and a half times around a triangle "
+         "(spread the index over neighbouring faces)";
+}
+
+// Two neighbouring faces together: the field turns by less than pi along
+// each of the four sides around them, so their indices with their curvature
+// must ask less than two turns (two singularities of the same sign side by
+// side on a flat part would need a half turn on all four sides). A local check that
+// refuses the most common impossible prescriptions before any solve.
+inline void check_neighbouring_faces(const Indexed_mesh& m, const Connection& con, const std::vector<int>& k)
+{
+  for(std::size_t ci = 0; ci < 3 * m.number_of_faces(); ++ci)
+  {
+    const std::size_t twin = m.twin_corner[ci];
+    if(twin == no_index || twin < ci || m.twin_corner[twin] != ci) continue;
+    const std::size_t f = Indexed_mesh::face_of_corner(ci), g = Indexed_mesh::face_of_corner(twin);
+    if(k[f] == 0 && k[g] == 0) continue;
+    const double asked = 2. * CGAL_PI * (k[f] + k[g]) - con.holonomy[f] - con.holonomy[g];
+    if(!(std::abs(asked) <= 4. * (CGAL_PI - half_turn_margin)))
+      throw Invalid_input_error("face " + std::to_string(f) + " (index " + std::to_string(k[f]) + "/" +
+                                  std::to_string(con.degree) + ") and its neighbour, face " + std::to_string(g) +
+                                  " (index " + std::to_string(k[g]) + "/" + std::to_string(con.degree) +
+                                  "), ask the field to turn " + compact_number(std::abs(asked) / (2. * CGAL_PI)) +
+                                  " times along their four outer sides, where it turns less than two (move them apart)",
+                                f);
+  }
+}
+
 // The checks of a prescription that need no solve: an index each face can
-// show, and Poincare-Hopf on each closed component (sum k = n chi).
-inline void check_prescription(const Components& comps, const Connection& con,
+// show, alone and with each neighbour, and Poincare-Hopf on each closed
+// component (sum k = n chi).
+inline void check_prescription(const Indexed_mesh& m, const Components& comps, const Connection& con,
                                const std::vector<Component_report>& reports, const std::vector<int>& k)
 {
   for(std::size_t f = 0; f < k.size(); ++f)
     // the field turns by less than pi along each of the three sides
-    if(!(std::abs(2. * CGAL_PI * k[f] - con.holonomy[f]) < 3. * CGAL_PI))
-      throw Invalid_input_error("face " + std::to_string(f) + " cannot hold index " + std::to_string(k[f]) + "/" +
-                                std::to_string(con.degree) +
-                                ": a field on the vertices shows at most about one turn per triangle (spread the "
-                                "index over neighbouring faces)");
+    if(!(std::abs(2. * CGAL_PI * k[f] - con.holonomy[f]) <= 3. * (CGAL_PI - half_turn_margin)))
+      throw Invalid_input_error(unholdable_index_message(f, k[f], con), f);
+  check_neighbouring_faces(m, con, k);
   for(std::size_t c = 0; c < comps.list.size(); ++c)
   {
     if(!reports[c].is_closed) continue;
