@@ -504,12 +504,25 @@ void check_single_precision_eigen_solve(Test_report& report, const std::string& 
   // factor is replaced by a double-precision one, and the iteration goes on
   options.shift_fraction = shifted.shift / -shifted.coarse_upper_bound;
   options.stall_window = 1;
+  options.max_reshifts = 0;
   Solver stalled_solver;
   SI::Factored_matrix<Solver> stalled_factored(stalled_solver);
   const SI::Eigen_solve_result stalled = SI::smallest_eigenpair(A, M, stalled_factored, options);
   report.check(stalled.single_precision && stalled.refactored_in_double && !stalled_factored.holds_single_precision() &&
                  stalled.shift == shifted.shift && same_eigenpair(stalled),
                name + ": after a stall, the same shifted matrix is factored in double precision and the eigenpair found");
+  // with re-shifts: each stall moves the shift towards the best Ritz value, in double precision, and stays
+  // below lambda_1 (else the factorization refuses it and the old shift is factored again)
+  options.max_reshifts = 4;
+  Solver reshifted_solver;
+  SI::Factored_matrix<Solver> reshifted_factored(reshifted_solver);
+  const SI::Eigen_solve_result reshifted = SI::smallest_eigenpair(A, M, reshifted_factored, options);
+  report.check(reshifted.refactored_in_double && !reshifted_factored.holds_single_precision() &&
+                 reshifted.shift <= shifted.shift && -reshifted.shift < in_double.eigenvalue &&
+                 same_eigenpair(reshifted),
+               name + ": after stalls the shift moves towards lambda_1 (" + std::to_string(-shifted.shift) + " -> " +
+                 std::to_string(-reshifted.shift) + ", lambda_1 " + std::to_string(in_double.eigenvalue) +
+                 ") and the eigenpair is found");
 }
 
 // The coarse estimate and the shifted factorization of the eigen-solve, with

@@ -104,6 +104,10 @@ struct Eigen_solve_options
   // double precision (the benchmark's README).
   bool single_precision = true;
   std::size_t stall_window = 8;
+  // On a stall, the shift moves to theta - reshift_fraction (theta - sigma), theta the best Ritz value, at most
+  // max_reshifts times (see smallest_eigenpair()).
+  double reshift_fraction = 0.15;
+  int max_reshifts = 4;
 };
 
 // An eigenvector computed to the relative residual `tolerance` is
@@ -422,17 +426,17 @@ inline Complex_dense_matrix ritz_residuals(const Hermitian_pencil& pencil, const
 }
 
 // The iteration of smallest_eigenpair() on its factorization, from `start`:
-// see there. Returns the best Ritz vector u and M u. `refactor_exactly()`
-// replaces a single-precision factor by a double-precision one when the
-// iteration stalls with it: when its best residual has not fallen tenfold
-// over the last `options.stall_window` solves (a single step is no test:
-// the residual of the best Ritz pair often grows for a step on the way).
-// The iteration then goes on with the same basis.
+// see there. Returns the best Ritz vector u and M u. `refactor(theta)` is
+// called when the iteration stalls: when its best residual has not fallen
+// tenfold over the last `options.stall_window` solves (a single step is no
+// test: the residual of the best Ritz pair often grows for a step on the
+// way); theta is the best Ritz value. The iteration then goes on with the
+// same basis.
 
 template <typename SparseSolver, typename Refactor>
 void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_matrix<SparseSolver>& factored,
                                 const Eigen_solve_options& options, const Complex_dense_matrix& start,
-                                const Refactor& refactor_exactly, Eigen_solve_result& result, Complex_vector& u,
+                                const Refactor& refactor, Eigen_solve_result& result, Complex_vector& u,
                                 Complex_vector& Mu)
 {
   const Eigen::Index n = pencil.A.rows();
@@ -493,9 +497,11 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
     best_residual.push_back((std::min)(best_residual.back(), result.residual));
     const std::size_t k_now = best_residual.size() - 1;
     const std::size_t window = (std::max)(std::size_t(1), options.stall_window);
-    if(factored.holds_single_precision() && k_now >= window &&
-       !(best_residual[k_now] <= 0.1 * best_residual[k_now - window]))
-      refactor_exactly();
+    if(k_now >= window && !(best_residual[k_now] <= 0.1 * best_residual[k_now - window]))
+    {
+      refactor(result.eigenvalue);
+      best_residual.assign(1, best_residual.back());  // the next window starts here
+    }
   }
   Mu = MX.col(0);  // MX = M u (u is next's first column)
 }
@@ -564,20 +570,39 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
-  auto refactor_in_double = [&] {
+  // On a stall the shift moves towards the best Ritz value theta (an upper
+  // bound of lambda_1, far tighter than the coarse bound by then), factored
+  // in double precision:
+  // where many eigenvalues crowd just above lambda_1 (surfaces of high
+  // genus) the rate (lambda_1 - sigma) / (lambda_2 - sigma) is close to 1
+  // unless sigma is close to lambda_1. The factorization tells whether the
+  // new shift is still below lambda_1; if not, the old one is factored again
+  // (in double precision, as a single-precision factor is after a stall).
+  int reshifts = 0;
+  auto refactor = [&](double theta) {
     const auto start = Clock::now();
     options_after_analysis.same_pattern = true;
-    factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis, false, factored,
-                                     result);
-    result.refactored_in_double = true;
-    refactorization_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    const double sigma = -result.shift;
+    const bool single = factored.holds_single_precision();
+    bool tried = false, moved = false;
+    if(reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma)
+    {
+      ++reshifts;
+      tried = true;
+      const double closer = theta - options.reshift_fraction * (theta - sigma);
+      moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
+      if(moved) result.shift = -closer;
+    }
+    if(!moved && (tried || single)) factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
+    result.refactored_in_double = result.refactored_in_double || single;
+    refactorization_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   };
 
   const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));
   Complex_dense_matrix start = random_block(n, block, options.random_seed);
   if(estimate.vector.size() == n) start.col(0) = estimate.vector;
   Complex_vector u, Mu;
-  iterate_with_rayleigh_ritz(pencil, factored, options, start, refactor_in_double, result, u, Mu);
+  iterate_with_rayleigh_ritz(pencil, factored, options, start, refactor, result, u, Mu);
   const auto t2 = Clock::now();
 
   const double norm_u = std::sqrt((std::max)(0., u.dot(Mu).real()));
