@@ -4,7 +4,7 @@
 // compile only the mesh plumbing of Globally_optimal_direction_field (see the
 // README and the manual, "Compiling Faster").
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine_impl.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Field_engine_impl.h>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
 #endif

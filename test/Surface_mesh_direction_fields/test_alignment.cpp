@@ -444,6 +444,47 @@ static void check_errors(Test_report& report)
     "both lambda_t and t rejected");
 }
 
+// A call that ends by an exception (here lambda_t above lambda_1, found after
+// the matrices of another n and s were built and factored) leaves the class
+// as a fresh one: the next fields are the same bit for bit.
+static void check_class_after_a_refused_call(Test_report& report)
+{
+  Mesh mesh;
+  make_lumpy_sphere(mesh, 3);
+  auto guidance = mesh.add_property_map<Vertex_index, Vector_3>("v:g", Vector_3(0., 0., 1.)).first;
+  auto d1 = direction_map(mesh, "v:refused_call_1");
+  auto d2 = direction_map(mesh, "v:refused_call_2");
+  auto d3 = direction_map(mesh, "v:refused_call_3");
+  SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
+  const auto aligned = params::degree(4).vertex_guidance_map(guidance).alignment_lambda(-2.);
+  const SMDF::Direction_field_result first = field.compute(d1, aligned);
+  bool refused = false;
+  try
+  {
+    field.compute(d2, params::degree(6).smoothness_parameter(0.5).vertex_guidance_map(guidance).alignment_lambda(1e6));
+  }
+  catch(const SMDF::Invalid_input_error&)
+  {
+    refused = true;
+  }
+  const SMDF::Direction_field_result again = field.compute(d2, aligned);
+  const SMDF::Direction_field_result smoothest = field.compute(d3, params::degree(6).smoothness_parameter(0.5));
+  SMDF::Globally_optimal_direction_field<Mesh> fresh(mesh);
+  auto d4 = direction_map(mesh, "v:refused_call_4");
+  const SMDF::Direction_field_result fresh_smoothest = fresh.compute(d4, params::degree(6).smoothness_parameter(0.5));
+  bool same = true, same_smoothest = true;
+  for(Vertex_index v : mesh.vertices())
+  {
+    same = same && d1[v] == d2[v];
+    same_smoothest = same_smoothest && d3[v] == d4[v];
+  }
+  report.check(refused, "class: lambda_t above lambda_1 refused");
+  report.check(same && again.index_sum == first.index_sum && again.components[0].lambda == first.components[0].lambda,
+               "class: after a refused call, the aligned field of before, bit for bit");
+  report.check(same_smoothest && smoothest.components[0].eigenvalue == fresh_smoothest.components[0].eigenvalue,
+               "class: after a refused call, the smoothest field of a fresh class, bit for bit");
+}
+
 int main()
 {
   Test_report report("alignment");
@@ -454,5 +495,6 @@ int main()
   check_features(report);
   check_constraints(report);
   check_errors(report);
+  check_class_after_a_refused_call(report);
   return report.finish();
 }

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/cholmod_supernodal_factorization.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 
 #include <CGAL/Eigen_sparse_matrix.h>
 #include <CGAL/Eigen_vector.h>
@@ -116,6 +117,69 @@ public:
 private:
   std::shared_ptr<internal::Cholmod_supernodal_factorization> m_factorization;
 };
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The solver as the package's engine uses it (internal::Factored_matrix):
+// its factorization interface, as it is.
+template <>
+class Factored_matrix<Surface_mesh_direction_fields::Cholmod_supernodal_solver>
+  : public Shifted_factorization<Factored_matrix<Surface_mesh_direction_fields::Cholmod_supernodal_solver> >
+{
+  // the solver, not its factorization: an assignment to the solver (a copy
+  // shares its factorization) must be seen here
+  Surface_mesh_direction_fields::Cholmod_supernodal_solver& m_solver;
+
+  Cholmod_supernodal_factorization& factorization() { return m_solver.factorization(); }
+  const Cholmod_supernodal_factorization& factorization() const { return m_solver.factorization(); }
+
+  bool factor_numerically(const Complex_sparse_matrix& S, bool same_pattern)
+  {
+    return factorization().factor(S, same_pattern, this->single_precision_allowed());
+  }
+
+public:
+  static constexpr bool detects_indefinite = true;
+  static constexpr bool factors_lower_triangle = true;
+  static constexpr bool analyzes_patterns = true;
+
+  explicit Factored_matrix(Surface_mesh_direction_fields::Cholmod_supernodal_solver& solver) : m_solver(solver) {}
+
+  static Complex_sparse_matrix matrix_to_factor(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                                double shift)
+  {
+    return shifted_lower_triangle(A, M, shift);
+  }
+
+  void analyze_pattern(const Complex_sparse_matrix& pattern)
+  {
+    factorization().analyze_pattern(matrix_to_factor(pattern, pattern, 0.));
+  }
+
+  void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
+  {
+    if(!factor_numerically(S, same_pattern))
+      throw Solver_failure_error("the sparse solver could not factor the matrix (not positive definite?)");
+  }
+
+  bool factor_if_positive_definite(const Complex_sparse_matrix& S, bool same_pattern = false)
+  {
+    return factor_numerically(S, same_pattern);
+  }
+
+  // Whether a single right-hand side is solved by the parallel solve.
+  bool solves_in_parallel() const { return factorization().solves_in_parallel(); }
+  // Whether the last factorization was the package's (not CHOLMOD's).
+  bool factored_in_parallel() const { return factorization().factored_by_package(); }
+  // Whether it was in single precision (see allow_single_precision()).
+  bool holds_single_precision() const { return factorization().holds_single_precision(); }
+
+  Complex_dense_matrix solve(const Complex_dense_matrix& B) const { return factorization().solve(B); }
+};
+
+} // namespace internal
+/// \endcond
 
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL

@@ -24,11 +24,11 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 // the mesh plumbing: flat arrays, the named parameters read into index-based requests
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/named_inputs.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/named_inputs.h>
 // the method and the linear algebra behind one seam (Field_engine.h)
-#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Field_engine.h>
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION
-#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine_impl.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Field_engine_impl.h>
 #endif
 
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -15,6 +15,10 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+// the default solver, which estimates each process's block
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
+#endif
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_linear_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_assembly.h>

@@ -108,17 +108,13 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{no user guidance}
   \cgalParamNEnd
   \cgalParamNBegin{alignment_lambda}
-    \cgalParamDescription{with a guidance `q` (normalized to \f$ \|q\|_M = 1 \f$), the field is the solution of
-                          \f$ (A - \lambda_t M) u = M q \f$, normalized. \f$ \lambda_t \to -\infty \f$ gives the
-                          guidance itself, \f$ \lambda_t \to \lambda_1 \f$ the smoothest field; it must be below
-                          the smallest eigenvalue \f$ \lambda_1 \f$ of the component. With constraints and no guidance,
-                          the value used for \f$ (A - \lambda_t M)_{FF} \f$.}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`0`, as in the paper (or just below \f$ \lambda_1 \f$ if \f$ \lambda_1 \f$ is about 0, as on
-                      flat and developable surfaces). A given \f$ \lambda_t \f$ costs one factorization of
-                      \f$ A - \lambda_t M \f$ and one solve: its success certifies \f$ \lambda_t < \lambda_1 \f$,
-                      and \f$ \lambda_1 \f$ itself is computed only when needed (see `compute_eigenvalue_bound`).}
-  \cgalParamNEnd
+     \cgalParamDescription{with a guidance `q` (\f$ \|q\|_M = 1 \f$), the field solves \f$ (A - \lambda_t M) u = M q \f$:
+                           \f$ \lambda_t \to -\infty \f$ gives the guidance, \f$ \lambda_t \to \lambda_1 \f$ the
+                           smoothest field; it must be below the component's smallest eigenvalue \f$ \lambda_1 \f$}
+     \cgalParamType{`double`}
+     \cgalParamDefault{`0`, as in the paper (just below \f$ \lambda_1 \f$ where \f$ \lambda_1 \f$ is about 0): one
+                       factorization and one solve (user manual, section "Aligned and Constrained Fields")}
+   \cgalParamNEnd
   \cgalParamNBegin{alignment_weight}
     \cgalParamDescription{instead of \f$ \lambda_t \f$: the alignment weight \f$ t = 1/(1 + \|u\|_M) \in (0, 1) \f$ to
                           reach (close to 1: follow the guidance; close to 0: be smooth); \f$ \lambda_t \f$ is found by
@@ -155,54 +151,30 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`Boundary_alignment::NONE`}
   \cgalParamNEnd
   \cgalParamNBegin{edge_is_feature_map}
-    \cgalParamDescription{the sharp features the field must follow: at every vertex with exactly two feature edges
-                          (inside a feature polyline), one of the `n` directions is fixed along the polyline (a hard
-                          constraint, from one neighbour to the other); corners where three or more feature edges meet
-                          and the ends of open polylines stay free. Combines with the smoothest field, curvature
-                          alignment and guidance; a vertex of `vertex_is_constrained_map` keeps its own direction, and a
-                          feature overrides `boundary_alignment` on the boundary. Requires an even `n` (along an edge
-                          is a line, not an oriented direction). `CGAL::Polygon_mesh_processing::detect_sharp_edges()`
-                          fills such a map.}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
-                   as key type and `bool` as value type}
-    \cgalParamDefault{no feature}
-  \cgalParamNEnd
+     \cgalParamDescription{sharp features: inside a feature polyline one of the `n` directions follows it (a hard
+                           constraint); corners and the ends of open polylines stay free. Requires an even `n`;
+                           `CGAL::Polygon_mesh_processing::detect_sharp_edges()` fills such a map}
+     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+                    as key type and `bool` as value type}
+     \cgalParamDefault{no feature}
+   \cgalParamNEnd
   \cgalParamNBegin{prescribed_singularities}
-    \cgalParamDescription{places the singularities: the faces listed are singular with the index `k / n` given,
-                          every other face has index 0 (user manual, section "Placing Singularities"). The field is
-                          then the parallel section of the connection changed by the least amount (in the
-                          \f$ L^2 \f$ norm of the change as a 1-form) that gives every face the holonomy
-                          \f$ 2\pi k \f$, and every handle loop and every boundary loop but the longest of its
-                          component the multiple of \f$ 2\pi \f$ nearest to the surface's own; the longest
-                          boundary loop takes what the indices imply. The result is exact: the field's own indices
-                          (`singularities_output_iterator`) are the prescribed ones, face for face, and its magnitude
-                          is 1 everywhere. `s` has no effect (the parallel section has no energy for any `s`); the free
-                          rotation of each component is set by its first constrained vertex (the others must agree
-                          with it), or else to follow the guidance (`vertex_guidance_map`,
-                          `principal_curvature_alignment`) best. Refused: `alignment_lambda`, `alignment_weight`,
-                          `compute_eigenvalue_bound`, `distributed_solver`; a face listed twice or not of the mesh;
-                          indices of a closed component whose sum is not `n` times its Euler characteristic
-                          (Poincar&eacute;-Hopf); an index a triangle cannot show (about one turn at most), and
-                          prescriptions no field on the vertices can show (singularities in neighbouring faces
-                          asking more than a half turn of the field along their common edge). The class
-                          `Globally_optimal_direction_field` keeps the factorization: another prescription on the
-                          same mesh costs one sparse solve.}
-    \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%face_descriptor, int>` (what
-                   `singularities_output_iterator` writes, so that a field's singularities can be edited and
-                   given back)}
-    \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
-  \cgalParamNEnd
+     \cgalParamDescription{places the singularities: the faces listed get exactly the index `k / n` given, every other
+                           face index 0; the field is the parallel section of the least changed connection, rotated to
+                           follow a constrained vertex or the guidance (user manual, section "Placing Singularities",
+                           which says what is refused)}
+     \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%face_descriptor, int>`, as
+                    `singularities_output_iterator` writes them}
+     \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
+   \cgalParamNEnd
   \cgalParamNBegin{prescribed_loop_turns}
-    \cgalParamDescription{with `prescribed_singularities`: how many more times (positive or negative) than the
-                          nearest choice the field turns, by \f$ 2\pi / n \f$ each, along chosen loops of the surface:
-                          pairs `(l, t)` with `l` the position of the loop in
-                          `Globally_optimal_direction_field::prescription_loops()` (the loops through the handles, then
-                          the boundary loops). The longest boundary loop of each component takes what the indices
-                          and the other loops imply; turns asked of it must be those (otherwise the error gives
-                          both).}
-    \cgalParamType{a range of `std::pair<std::size_t, int>`}
-    \cgalParamDefault{0 for every loop: the turning nearest to the surface's own}
-  \cgalParamNEnd
+     \cgalParamDescription{with `prescribed_singularities`: pairs `(l, t)`, the field turns `t` more times (by
+                           \f$ 2\pi / n \f$) than the nearest choice along loop `l` of
+                           `Globally_optimal_direction_field::prescription_loops()` (what
+                           `Direction_field_result::loop_turns` reports gives a field back)}
+     \cgalParamType{a range of `std::pair<std::size_t, int>`}
+     \cgalParamDefault{0 for every loop: the turning nearest to the surface's own}
+   \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{an output iterator receiving, for each singular face, the pair of the
                           face and its integer index `k` (the field's index there is `k / n`)}
@@ -219,17 +191,13 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{no output}
   \cgalParamNEnd
   \cgalParamNBegin{intrinsic_mollification}
-    \cgalParamDescription{the relative margin \f$ \delta \f$ of the intrinsic mollification of degenerate
-                          triangles: if some face violates \f$ \ell_a + \ell_b - \ell_c \ge \delta \bar\ell \f$
-                          (\f$ \bar\ell \f$ the mean edge length), the smallest length that restores it everywhere
-                          is added to every edge length, and the computation uses these lengths (Sharp and Crane,
-                          2020). Faces with zero area, coincident vertices or collinear vertices then get finite
-                          matrices. A mesh with no such face is not changed at all. `0` switches it off; zero-area
-                          faces are then rejected.}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`1e-6`}
-    \cgalParamExtra{The length added is reported in `Direction_field_result::mollification`.}
-  \cgalParamNEnd
+     \cgalParamDescription{the relative margin \f$ \delta \f$ of the intrinsic mollification (Sharp and Crane, 2020):
+                           where a face violates \f$ \ell_a + \ell_b - \ell_c \ge \delta \bar\ell \f$, the smallest
+                           length that restores it is added to every edge length (reported in
+                           `Direction_field_result::mollification`); `0` switches it off}
+     \cgalParamType{`double`}
+     \cgalParamDefault{`1e-6`}
+   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -239,16 +207,12 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                     must be available in `TriangleMesh`.}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_normal_map}
-    \cgalParamDescription{a property map giving the vertex normals that define the tangent planes of the
-                          output directions}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `GT::Vector_3` as value type}
-    \cgalParamDefault{the angle-weighted mean of the incident face normals; at the vertices of folded
-                      triangles, the normal of the surface fitted to the vertex's two-ring (user manual,
-                      section \ref SMDF_folds)}
-    \cgalParamExtra{given normals also tell folded triangles: a face whose normal points against the given
-                    normal of one of its vertices is laid out in the tangent planes of its vertices}
-  \cgalParamNEnd
+     \cgalParamDescription{the vertex normals that define the tangent planes of the output directions (they also
+                           tell folded triangles: user manual, section \ref SMDF_folds)}
+     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                    as key type and `GT::Vector_3` as value type}
+     \cgalParamDefault{the angle-weighted mean of the incident face normals (the fitted surface's at folds)}
+   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{an instance of a geometric traits class}
     \cgalParamType{a class model of `DirectionFieldTraits_3` (every \cgal kernel is one)}

@@ -24,9 +24,6 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-#include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
-#endif
 
 #include <complex>
 #include <memory>
@@ -46,7 +43,8 @@
 // since the previous factorization, only the numerical factorization is
 // redone (the ordering and symbolic analysis are reused). The package's
 // default, `Cholmod_supernodal_solver`, has its own specialization, a thin
-// adapter of its factorization interface.
+// adapter of its factorization interface, in its own header (this layer
+// includes no public header).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -351,62 +349,6 @@ public:
   }
 };
 
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-// The package's default solver: its factorization interface, as it is.
-template <>
-class Factored_matrix<Cholmod_supernodal_solver> : public Shifted_factorization<Factored_matrix<Cholmod_supernodal_solver> >
-{
-  // the solver, not its factorization: an assignment to the solver (a copy
-  // shares its factorization) must be seen here
-  Cholmod_supernodal_solver& m_solver;
-
-  Cholmod_supernodal_factorization& factorization() { return m_solver.factorization(); }
-  const Cholmod_supernodal_factorization& factorization() const { return m_solver.factorization(); }
-
-  bool factor_numerically(const Complex_sparse_matrix& S, bool same_pattern)
-  {
-    return factorization().factor(S, same_pattern, this->single_precision_allowed());
-  }
-
-public:
-  static constexpr bool detects_indefinite = true;
-  static constexpr bool factors_lower_triangle = true;
-  static constexpr bool analyzes_patterns = true;
-
-  explicit Factored_matrix(Cholmod_supernodal_solver& solver) : m_solver(solver) {}
-
-  static Complex_sparse_matrix matrix_to_factor(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                                double shift)
-  {
-    return shifted_lower_triangle(A, M, shift);
-  }
-
-  void analyze_pattern(const Complex_sparse_matrix& pattern)
-  {
-    factorization().analyze_pattern(matrix_to_factor(pattern, pattern, 0.));
-  }
-
-  void factor(const Complex_sparse_matrix& S, bool same_pattern = false)
-  {
-    if(!factor_numerically(S, same_pattern))
-      throw Solver_failure_error("the sparse solver could not factor the matrix (not positive definite?)");
-  }
-
-  bool factor_if_positive_definite(const Complex_sparse_matrix& S, bool same_pattern = false)
-  {
-    return factor_numerically(S, same_pattern);
-  }
-
-  // Whether a single right-hand side is solved by the parallel solve.
-  bool solves_in_parallel() const { return factorization().solves_in_parallel(); }
-  // Whether the last factorization was the package's (not CHOLMOD's).
-  bool factored_in_parallel() const { return factorization().factored_by_package(); }
-  // Whether it was in single precision (see allow_single_precision()).
-  bool holds_single_precision() const { return factorization().holds_single_precision(); }
-
-  Complex_dense_matrix solve(const Complex_dense_matrix& B) const { return factorization().solve(B); }
-};
-#endif
 
 } // namespace internal
 } // namespace Surface_mesh_direction_fields

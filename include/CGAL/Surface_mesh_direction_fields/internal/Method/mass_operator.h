@@ -31,7 +31,7 @@
 // single call needs M only for two products once A - lambda_t M is formed
 // (M q, with the norm of q, and the norm of u), and the factorization is the
 // moment of peak memory: with the products taken from the faces, A and M are
-// freed before it (user manual, "Implementation").
+// freed before it (developer notes, "Performance and Repeated Work").
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {

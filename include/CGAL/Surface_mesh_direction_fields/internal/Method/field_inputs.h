@@ -9,15 +9,15 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FIELD_INPUTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FIELD_INPUTS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/principal_curvatures.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
@@ -240,4 +240,4 @@ inline void add_feature_constraints(const Field_request& request, const Indexed_
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_FIELD_INPUTS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FIELD_INPUTS_H

@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_NAMED_INPUTS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_NAMED_INPUTS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -18,7 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -198,4 +198,4 @@ void read_constraint_request(const TriangleMesh& tm, const NamedParameters& np,
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_MESH_NAMED_INPUTS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_NAMED_INPUTS_H

@@ -1,0 +1,304 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_COMPONENT_SYSTEMS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_COMPONENT_SYSTEMS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/mass_operator.h>
+
+#include <cstddef>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <vector>
+
+// The engine's second room: the linear systems of each component (user
+// manual, "The Smoothest Field" and "Aligned and Constrained Fields") and
+// what is kept of them between fields. The matrices A and M belong to one
+// connection degree n and one s; a factorization knows which matrix it
+// holds; the settings of one compute() (a user's solver, a distributed
+// backend, whether factorizations are kept) are fixed when the call starts
+// and undone when it ends, also by an exception (Call_scope).
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// A solver and its factorization, for one component's A + shift M: its
+// symbolic analysis is reused for every later factorization (the pattern of
+// A + shift M does not depend on n, s or the shift).
+template <typename SparseSolver>
+struct Component_factorization
+{
+  SparseSolver solver;
+  Factored_matrix<SparseSolver> factored{solver};
+  bool analyzed = false;
+  // the lambda_t of the aligned system A - lambda_t M it holds, if it holds
+  // one: another guidance field with the same lambda_t then costs one solve
+  std::optional<double> aligned_lambda;
+  std::optional<double> refused_lambda;  // the last lambda_t found too large
+};
+
+// The settings of one compute().
+template <typename SparseSolver>
+struct Call_policy
+{
+  const SparseSolver* user_solver = nullptr;         // for this call only, nothing kept
+  const Distributed_backend* distributed = nullptr;  // the components it spreads over processes
+};
+
+template <typename SparseSolver>
+class Component_systems
+{
+public:
+  typedef Component_factorization<SparseSolver> Factorization;
+  static constexpr bool detects_indefinite = Factored_matrix<SparseSolver>::detects_indefinite;
+
+  explicit Component_systems(const Mesh_geometry& geometry) : m_geometry(geometry) {}
+
+  // One compute(): its policy holds until the scope ends. A call that ends
+  // by an exception drops what it may have left half made (factorizations,
+  // matrices), so the next call starts from a consistent state.
+  class Call_scope
+  {
+  public:
+    Call_scope(Component_systems& systems, const Call_policy<SparseSolver>& policy)
+      : m_systems(systems), m_exceptions(std::uncaught_exceptions())
+    {
+      m_systems.begin_call(policy);
+    }
+    ~Call_scope() { m_systems.end_call(std::uncaught_exceptions() > m_exceptions); }
+    Call_scope(const Call_scope&) = delete;
+    Call_scope& operator=(const Call_scope&) = delete;
+
+  private:
+    Component_systems& m_systems;
+    int m_exceptions;
+  };
+
+  void keep_factorizations(bool keep) { m_keep_factorizations = keep; }
+  bool keeps_factorizations() const { return m_call.keep_factorizations; }
+  bool user_solver() const { return m_call.user_factorization != nullptr; }
+  const Distributed_backend* distributed() const { return m_call.distributed; }
+  double s() const { return m_matrices_s.value_or(0.); }
+
+  // The connection of degree n (the matrices, if any, are then outdated).
+  const Connection& update_connection(int degree)
+  {
+    if(m_connection.transport.empty() || m_connection.degree != degree)
+    {
+      m_matrices_s.reset();
+      m_connection = compute_connection(m_geometry.mesh, m_geometry.tangent_spaces, degree);
+    }
+    return m_connection;
+  }
+  const Connection& connection() const { return m_connection; }
+
+  // A and M of every component for n and s, unless they are those already.
+  // `shifts` (see shift_only()) asks for lower(A + shift M) alone where not NaN.
+  void update_matrices(int degree, double s, const std::vector<double>& shifts = {})
+  {
+    update_connection(degree);
+    if(m_matrices_s == s) return;
+    forget_matrices();  // the old matrices freed before the new ones are built
+    m_matrices.resize(m_geometry.components.list.size());
+    if(!m_call.distributed)  // the first process assembles only what it solves or what the aligned field reads
+      m_matrices = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_connection,
+                                            m_geometry.components, s, shifts, &m_call.shifted_lower);
+    for(std::size_t c = 0; c < m_call.shifted_lower.size(); ++c)
+      if(m_call.shifted_lower[c].matrix.rows() != 0) m_scales[c] = m_call.shifted_lower[c].eigenvalue_scale;
+    m_matrices_s = s;
+  }
+
+  // A and M of component c, assembled when first needed: also when
+  // factor_aligned_system() freed them, or the assembly gave only the matrix
+  // it factors (see shift_only()).
+  const Energy_and_mass& matrices(std::size_t c)
+  {
+    Energy_and_mass& em = m_matrices[c];
+    if(em.energy.rows() == 0 || em.mass.rows() == 0)
+      em = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_connection,
+                                    m_geometry.components.list[c], m_geometry.components.local_index, s());
+    return em;
+  }
+
+  // trace(A) / trace(M) of component c (eigenvalue_scale()), kept while A
+  // and M are those of the current n and s, also when freed.
+  double scale(std::size_t c)
+  {
+    std::optional<double>& scale = m_scales[c];
+    if(!scale) scale = eigenvalue_scale(matrices(c).energy, matrices(c).mass);
+    return *scale;
+  }
+
+  // M x for component c: with M, or from the faces once factor_aligned_system() freed it.
+  Complex_vector mass_times(std::size_t c, const Complex_vector& x)
+  {
+    if(m_matrices[c].mass.rows() != 0 || distributes(c) || m_call.keep_factorizations)
+      return matrices(c).mass * x;
+    prepare_mass_operator();
+    return m_call.mass_operator->times(m_geometry.components.list[c], m_geometry.components.local_index, x);
+  }
+
+  // The products with M from the faces, for a call that frees the matrices.
+  void prepare_mass_operator()
+  {
+    if(!m_call.keep_factorizations && !m_call.mass_operator)
+      m_call.mass_operator = std::make_unique<Mass_operator>(m_geometry.mesh, m_geometry.tangent_spaces, m_connection);
+  }
+
+  // Whether component c is spread over the processes of a distributed backend.
+  bool distributes(std::size_t c) const
+  {
+    return m_call.distributed != nullptr && m_call.distributed->distributes(m_geometry.components.list[c].vertices.size());
+  }
+
+  // Whether the solver of component c tells when A - lambda M is not
+  // positive definite (the distributed solves do not factor).
+  bool certifies_definiteness(std::size_t c) const { return detects_indefinite && !distributes(c); }
+
+  Assembly_source assembly_source(std::size_t c) const
+  {
+    return {&m_geometry.mesh, &m_geometry.tangent_spaces, &m_connection, &m_geometry.components.list[c],
+            &m_geometry.components.local_index};
+  }
+
+  // The shift per component (NaN: none) for which the assembly gives only
+  // the lower triangle of A + shift M, without A and M: the components whose
+  // aligned system is factored before the guidance (`early`), in a call that
+  // keeps no factorization, with a solver that reads that triangle only.
+  std::vector<double> shift_only(const std::vector<std::size_t>& early, double lambda) const
+  {
+    std::vector<double> shifts;
+    if(m_call.keep_factorizations || !Factored_matrix<SparseSolver>::factors_lower_triangle || early.empty())
+      return shifts;
+    shifts.assign(m_geometry.components.list.size(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t c : early) shifts[c] = -lambda;
+    return shifts;
+  }
+
+  // The factorization of component c: the user's solver (this call only), or
+  // the component's own one, whose symbolic analysis is reused.
+  Factorization& factorization(std::size_t c)
+  {
+    if(m_call.user_factorization) return *m_call.user_factorization;
+    if(m_factorizations.size() != m_geometry.components.list.size())
+      m_factorizations.resize(m_geometry.components.list.size());
+    if(!m_factorizations[c]) m_factorizations[c] = std::make_unique<Factorization>();
+    return *m_factorizations[c];
+  }
+
+  // Frees component c's factorization unless factorizations are kept.
+  void release_factorization(std::size_t c)
+  {
+    if(!m_call.keep_factorizations && !m_call.user_factorization) m_factorizations[c].reset();
+  }
+
+  // Factors A - lambda M of component c for its aligned field (kept for the
+  // solve that follows). In a call that keeps nothing the aligned field needs
+  // only two products with M besides this factorization, which Mass_operator
+  // computes from the faces: the assembly then gives the matrix to factor
+  // directly, without A and M (see shift_only()), or A and M are freed before
+  // the factorization, the moment of peak memory.
+  void factor_aligned_system(std::size_t c, double lambda)
+  {
+    Factorization& kept = factorization(c);
+    Complex_sparse_matrix S;
+    std::vector<Shifted_lower_triangle>& lower = m_call.shifted_lower;
+    if(c < lower.size() && lower[c].matrix.rows() != 0 && lower[c].shift == -lambda)
+      S.swap(lower[c].matrix);
+    else
+    {
+      scale(c);  // kept beyond the matrices
+      S = Factored_matrix<SparseSolver>::matrix_to_factor(matrices(c).energy, matrices(c).mass, -lambda);
+    }
+    if(!m_call.keep_factorizations)  // swapped with empty ones: Eigen's assignment of an empty matrix keeps the memory
+    {
+      Complex_sparse_matrix().swap(m_matrices[c].energy);
+      Complex_sparse_matrix().swap(m_matrices[c].mass);
+    }
+    kept.aligned_lambda.reset();
+    const bool factored_ok = kept.factored.factor_if_positive_definite(S, kept.analyzed);
+    kept.analyzed = true;
+    if(factored_ok) kept.aligned_lambda = lambda;
+    kept.refused_lambda = factored_ok ? std::nullopt : std::optional<double>(lambda);
+  }
+
+private:
+  // What one compute() sets up and its end undoes.
+  struct Call_state
+  {
+    bool keep_factorizations = true;
+    std::unique_ptr<Factorization> user_factorization;  // the user's solver
+    const Distributed_backend* distributed = nullptr;
+    std::unique_ptr<Mass_operator> mass_operator;        // products with M once it is freed
+    // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
+    std::vector<Shifted_lower_triangle> shifted_lower;
+  };
+
+  void begin_call(const Call_policy<SparseSolver>& policy)
+  {
+    m_call = Call_state();
+    m_call.keep_factorizations = m_keep_factorizations;
+    if(policy.user_solver != nullptr)
+    {
+      m_call.user_factorization = std::make_unique<Factorization>();
+      m_call.user_factorization->solver = *policy.user_solver;
+    }
+    m_call.distributed = policy.distributed;
+  }
+
+  void end_call(bool failed)
+  {
+    if(!m_keep_factorizations || failed) m_factorizations.clear();
+    if(failed) forget_matrices();
+    m_call = Call_state();
+  }
+
+  // The matrices of no n and s, and nothing factored from them.
+  void forget_matrices()
+  {
+    m_matrices_s.reset();
+    m_matrices.clear();
+    m_scales.assign(m_geometry.components.list.size(), std::nullopt);
+    m_call.mass_operator.reset();  // its kernels depend on the degree
+    m_call.shifted_lower.clear();
+    for(auto& kept : m_factorizations)  // they factor the old matrices
+      if(kept)
+      {
+        kept->aligned_lambda.reset();
+        kept->refused_lambda.reset();
+      }
+  }
+
+  const Mesh_geometry& m_geometry;
+  bool m_keep_factorizations = true;  // the setting; m_call's copy holds during a call
+  Connection m_connection;
+  std::optional<double> m_matrices_s;  // the s of m_matrices (for the connection's degree); none: outdated
+  std::vector<Energy_and_mass> m_matrices;
+  std::vector<std::optional<double> > m_scales;  // per component
+  std::vector<std::unique_ptr<Factorization> > m_factorizations;
+  Call_state m_call;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_COMPONENT_SYSTEMS_H

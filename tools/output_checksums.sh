@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Checksums of the program's outputs on every mesh of a folder, for several option sets:
+# a refactoring that must not change results is checked by comparing two runs' lists.
+#   bash tools/output_checksums.sh PROGRAM MESH_FOLDER > sums.txt
+set -euo pipefail
+program=$1
+meshes=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+option_sets=(
+  "--degree 4"
+  "--degree 1 --s 1"
+  "--degree 2 --s -1"
+  "--degree 4 --align curvature --feature-angle 35"
+  "--degree 6 --constrain-boundary tangent"
+)
+outputs=(directions.txt singularities.txt field.vtu markers.vtk field.ply list.txt lines.vtp repaired.off
+         picture.png run.json)
+for mesh in "$meshes"/*.off; do
+  for set_index in "${!option_sets[@]}"; do
+    rm -f "$work"/*
+    cross_field_files=()
+    case "${option_sets[$set_index]}" in
+      "--degree 4"*) cross_field_files=(--rosy "$work/field.rosy" --ffield "$work/field.ffield") ;;
+    esac
+    # shellcheck disable=SC2086
+    if ! "$program" "$mesh" ${option_sets[$set_index]} --quiet "${cross_field_files[@]}" --json-file "$work/run.json" \
+        --directions "$work/directions.txt" --singularities "$work/singularities.txt" \
+        --vtk "$work/field.vtu" --vtk-singularities "$work/markers.vtk" --ply "$work/field.ply" \
+        --singularity-list "$work/list.txt" --streamlines "$work/lines.vtp" \
+        --mesh-out "$work/repaired.off" --png "$work/picture.png" > /dev/null 2> "$work/error.txt"; then
+      echo "$(basename "$mesh") [${option_sets[$set_index]}] refused: $(head -c 120 "$work/error.txt")"
+      continue
+    fi
+    # the JSON without its timings
+    sed -E -i 's/"timings_ms":\{[^}]*\}//; s/"io_ms":[-0-9.e+]*//' "$work/run.json"
+    [ ${#cross_field_files[@]} -eq 0 ] || outputs_here=("${outputs[@]}" field.rosy field.ffield)
+    [ ${#cross_field_files[@]} -ne 0 ] || outputs_here=("${outputs[@]}")
+    for output in "${outputs_here[@]}"; do
+      [ -e "$work/$output" ] || { echo "$(basename "$mesh") [${option_sets[$set_index]}] $output absent"; continue; }
+      echo "$(basename "$mesh") [${option_sets[$set_index]}] $output $(sha256sum < "$work/$output" | cut -c1-16)"
+    done
+  done
+done
