@@ -9,7 +9,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
 
-#include "output_files.h"
+#include "file_io/output_files.h"
 
 #include <functional>
 

@@ -35,7 +35,7 @@ typedef SMDF::Globally_optimal_direction_field<Mesh> Field;
 typedef py::array_t<double, py::array::c_style | py::array::forcecast> Float_array;
 typedef py::array_t<long long, py::array::c_style | py::array::forcecast> Index_array;
 
-#include "read_and_repair_mesh.h"
+#include "file_io/read_and_repair_mesh.h"
 
 namespace {
 

@@ -76,7 +76,7 @@ for name, options, what in [("bones.off", [], "smoothest"), ("plane_holes.off", 
     if SHARED and os.path.exists(path):
         cases.append((path, options, what))
     else:
-        print("SKIPPED %s: no shared meshes" % name)
+        check.skip("%s: no shared meshes" % name)
 
 for mesh, options, what in cases:
     tag = os.path.basename(mesh) + "_" + what
@@ -298,7 +298,7 @@ if os.path.exists(plane_holes):
             check(r.returncode != 0 and expected in r.stderr and "alignment_lambda" not in r.stderr,
                   "-ksp_max_it %s, %d processes: status %d, %r" % (limit, ranks, r.returncode, r.stderr[:200]))
 else:
-    print("SKIPPED -ksp_max_it: no shared meshes")
+    check.skip("-ksp_max_it: no shared meshes")
 
 
 def launched_with(wrapper_body, tag):
@@ -351,6 +351,6 @@ if os.path.exists(large):
         except subprocess.TimeoutExpired:
             check(False, "rank 1 killed after %s s: no end in 240 s" % seconds)
 else:
-    print("SKIPPED a process out of memory or killed: no shared meshes")
+    check.skip("a process out of memory or killed: no shared meshes")
 
 check.finish()

@@ -48,7 +48,7 @@ for name, ranks in (("plane_holes.off", [1, 2]), ("eight.off", [2, 4])):
     if os.path.exists(path):
         cases.append((path, ranks))
     else:
-        print("skipped (no shared mesh):", name)
+        check.skip("no shared mesh: " + name)
 
 for mesh, ranks in cases:
     for k in ranks:

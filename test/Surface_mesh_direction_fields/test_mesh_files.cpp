@@ -7,7 +7,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "png_snapshot.h"
-#include "read_polygon_soup.h"
+#include "file_io/read_polygon_soup.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 

@@ -7,6 +7,14 @@
 #include <iostream>
 #include <string>
 
+// Whether a check was left out because a shared mesh is missing: the test
+// then reports SKIP to CTest (SKIP_RETURN_CODE 77) unless a check failed.
+inline bool& shared_mesh_missing()
+{
+  static bool missing = false;
+  return missing;
+}
+
 class Test_report
 {
   std::string m_name;
@@ -27,7 +35,13 @@ public:
   int finish() const
   {
     std::cout << m_name << ": " << m_passed << " checks passed, " << m_failed << " failed" << std::endl;
-    return m_failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    if(m_failed != 0) return EXIT_FAILURE;
+    if(shared_mesh_missing())
+    {
+      std::cout << m_name << ": SKIP (checks on the shared meshes left out: ../shared/data/meshes)" << std::endl;
+      return 77;
+    }
+    return EXIT_SUCCESS;
   }
 };
 
@@ -43,10 +57,20 @@ public:
 inline std::string shared_mesh_path(const std::string& name)
 {
   const std::string dir = SMDF_SHARED_MESH_DIR;
-  if(dir.empty()) { std::cout << "SKIPPED " << name << ": ../shared/data/meshes not found" << std::endl; return ""; }
+  if(dir.empty())
+  {
+    std::cout << "SKIPPED " << name << ": ../shared/data/meshes not found" << std::endl;
+    shared_mesh_missing() = true;
+    return "";
+  }
   const std::string path = dir + "/" + name;
   std::ifstream probe(path);
-  if(!probe) { std::cout << "SKIPPED " << name << ": not in " << dir << std::endl; return ""; }
+  if(!probe)
+  {
+    std::cout << "SKIPPED " << name << ": not in " << dir << std::endl;
+    shared_mesh_missing() = true;
+    return "";
+  }
   return path;
 }
 

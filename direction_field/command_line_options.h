@@ -1,8 +1,8 @@
 // The options of the command-line program direction_field: one table says
 // what each one means (printed by --help, and in this folder's README.md),
 // parse_options() reads and checks them.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_COMMAND_LINE_OPTIONS_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_COMMAND_LINE_OPTIONS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_COMMAND_LINE_OPTIONS_H
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
@@ -164,7 +164,13 @@ inline void print_help(std::ostream& os)
 }
 
 // A number, compactly, for messages (as the library's messages print them).
-inline std::string compact(double x) { return CGAL::Surface_mesh_direction_fields::internal::compact_number(x); }
+// A number in a message, compactly ("1e+09", "0.5").
+inline std::string compact(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)

@@ -1,12 +1,12 @@
 // What the command-line program direction_field prints: one line of JSON
 // (--json, --json-file: the keys are a contract, only ever extended) or a
 // short human-readable summary.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_REPORTS_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_REPORTS_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_REPORTS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_REPORTS_H
 
 #include "command_line_options.h"
 #include "progress.h"
-#include "read_and_repair_mesh.h"
+#include "file_io/read_and_repair_mesh.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 

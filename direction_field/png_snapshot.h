@@ -4,10 +4,8 @@
 // index, blue: negative) and a legend, and writes a PNG with no library
 // beyond the standard one (and zlib when the build found it). Used by the command-line program; not
 // part of the package's API.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PNG_SNAPSHOT_H
-
-#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PNG_SNAPSHOT_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PNG_SNAPSHOT_H
 
 #include <algorithm>
 #include <array>
@@ -22,15 +20,23 @@
 
 namespace png_snapshot {
 
-// the package's 3-vector toolkit
-typedef CGAL::Surface_mesh_direction_fields::internal::Vec3 V3;
-using CGAL::Surface_mesh_direction_fields::internal::cross;
-using CGAL::Surface_mesh_direction_fields::internal::dot;
-using CGAL::Surface_mesh_direction_fields::internal::norm;
-using CGAL::Surface_mesh_direction_fields::internal::operator+;
-using CGAL::Surface_mesh_direction_fields::internal::operator-;
-using CGAL::Surface_mesh_direction_fields::internal::operator*;
-inline V3 unit(const V3& a) { return CGAL::Surface_mesh_direction_fields::internal::normalized(a); }
+// The picture's own 3-vectors (the package keeps its vector math internal).
+typedef std::array<double, 3> V3;
+inline V3 operator+(const V3& a, const V3& b) { return V3{a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+inline V3 operator-(const V3& a, const V3& b) { return V3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline V3 operator*(double s, const V3& a) { return V3{s * a[0], s * a[1], s * a[2]}; }
+inline double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm(const V3& a) { return std::sqrt(dot(a, a)); }
+inline V3 cross(const V3& a, const V3& b)
+{
+  return V3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+// a / |a| (as 1 / |a| times a); the zero vector stays zero
+inline V3 unit(const V3& a)
+{
+  const double length = norm(a);
+  return length > 0. ? (1. / length) * a : a;
+}
 
 struct Scene
 {

@@ -17,8 +17,8 @@
 //        vertex_index); other elements and properties are skipped;
 //   STL  ASCII and binary; identical points are shared, numbered in the order
 //        of their first appearance (as CGAL's STL reader does).
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_POLYGON_SOUP_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_POLYGON_SOUP_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_READ_POLYGON_SOUP_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_READ_POLYGON_SOUP_H
 
 #include <algorithm>
 #include <array>

@@ -18,8 +18,8 @@
 // their names match, or when they are the same existing file (links). If a
 // rename fails while the outputs are put in place, those already renamed are
 // taken back and the older files of those names restored.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_OUTPUT_FILES_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_OUTPUT_FILES_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_OUTPUT_FILES_H
 
 #include <cerrno>
 #include <csignal>

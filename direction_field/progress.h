@@ -1,8 +1,8 @@
 // What a run of direction_field is doing, said on stderr while it does it
 // (when stderr is a terminal and --quiet is not given), and the time of the
 // program's own steps (reading, repair, writing) for the JSON.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PROGRESS_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_PROGRESS_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PROGRESS_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PROGRESS_H
 
 #include <chrono>
 #include <cstdio>

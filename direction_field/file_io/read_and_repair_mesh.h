@@ -18,8 +18,8 @@
 // Steps 1, 2 and 4 are sorts; step 5 runs only when the triangles are not
 // already an oriented manifold mesh (no directed edge twice, every vertex one
 // fan), so that a clean file goes straight to the mesh.
-#ifndef SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
-#define SURFACE_MESH_DIRECTION_FIELDS_EXAMPLES_READ_AND_REPAIR_MESH_H
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_READ_AND_REPAIR_MESH_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_READ_AND_REPAIR_MESH_H
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -29,7 +29,11 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#endif
 
 #include "read_polygon_soup.h"
 
@@ -93,6 +97,33 @@ struct Repaired_mesh
 };
 
 namespace read_and_repair_internal {
+
+// The repair's independent loops and steps: on TBB's threads when CGAL is
+// linked with it (each index writes only its own outputs), one after the
+// other otherwise.
+template <typename Body>
+void for_each_index(std::size_t n, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&body](const tbb::blocked_range<std::size_t>& r) {
+    for(std::size_t i = r.begin(); i < r.end(); ++i) body(i);
+  });
+#else
+  for(std::size_t i = 0; i < n; ++i) body(i);
+#endif
+}
+
+template <typename First, typename Second>
+void invoke_both(const First& first, const Second& second)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_invoke(first, second);
+#else
+  first();
+  second();
+#endif
+}
+
 
 typedef std::array<double, 3> P3;
 
@@ -388,7 +419,7 @@ struct Directed_edges
     for(std::size_t e = 0; e < leaving.size(); ++e)
       leaving[first_leaving[source(e) + 1]++] = {static_cast<Edge_number>(target(e)), static_cast<Edge_number>(e)};
     first_leaving.pop_back();
-    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(
+    for_each_index(
       points, [&](std::size_t v) { std::sort(leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v]),
                                              leaving.begin() + static_cast<std::ptrdiff_t>(first_leaving[v + 1])); });
   }
@@ -399,7 +430,7 @@ struct Directed_edges
   bool pair_up()
   {
     std::atomic<bool> refused{false};
-    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(number_of_vertices(), [&](std::size_t u) {
+    for_each_index(number_of_vertices(), [&](std::size_t u) {
       for(auto it = begin(u); it != end(u); ++it)
       {
         if(it + 1 != end(u) && (it + 1)->first == it->first) refused = true;
@@ -422,7 +453,7 @@ struct Directed_edges
   bool one_fan_per_vertex() const
   {
     std::atomic<bool> one_fan{true};
-    CGAL::Surface_mesh_direction_fields::internal::parallel_for_each_index(number_of_vertices(), [&](std::size_t v) {
+    for_each_index(number_of_vertices(), [&](std::size_t v) {
       if(begin(v) == end(v)) return;
       const std::size_t corners = static_cast<std::size_t>(end(v) - begin(v));
       const Edge_number start = border_leaving[v] != no_edge ? border_leaving[v] : begin(v)->second;
@@ -473,7 +504,7 @@ bool build_oriented_manifold(const Points& points, const Triangles& triangles, M
   // the vertices and faces are allocated while the edges are paired and checked
   std::unique_ptr<Directed_edges<Triangles> > edges;
   bool manifold = false;
-  CGAL::Surface_mesh_direction_fields::internal::parallel_invoke(
+  invoke_both(
     [&] {
       edges = std::make_unique<Directed_edges<Triangles> >(points.size(), triangles);
       manifold = edges->pair_up() && edges->one_fan_per_vertex();
@@ -513,10 +544,9 @@ void link_halfedges(const Directed_edges<Triangles>& edges, const std::vector<ty
   typedef typename Mesh::Vertex_index Vertex_index;
   typedef typename Mesh::Face_index Face_index;
   typedef typename Mesh::size_type size_type;
-  namespace par = CGAL::Surface_mesh_direction_fields::internal;
   auto vertex = [](std::size_t v) { return Vertex_index(static_cast<size_type>(v)); };
   auto border_of = [&](std::size_t e) { return mesh.opposite(halfedge_of[e]); };  // e without opposite
-  par::parallel_for_each_index(edges.triangles.size(), [&](std::size_t t) {
+  for_each_index(edges.triangles.size(), [&](std::size_t t) {
     const Face_index f(static_cast<size_type>(t));
     for(std::size_t k = 0; k < 3; ++k)
     {
@@ -530,7 +560,7 @@ void link_halfedges(const Directed_edges<Triangles>& edges, const std::vector<ty
   });
   // the border halfedge of the edge e leaving u goes into u; the one before
   // it is that of the border edge leaving target(e). Each vertex has one.
-  par::parallel_for_each_index(edges.number_of_vertices(), [&](std::size_t u) {
+  for_each_index(edges.number_of_vertices(), [&](std::size_t u) {
     const Edge_number e = edges.border_leaving[u];
     if(e != no_edge)
     {

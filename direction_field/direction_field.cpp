@@ -20,11 +20,10 @@
 
 #include "command_line_options.h"
 #include "exchange_files.h"
-#include <CGAL/Surface_mesh_direction_fields/internal/number_writer.h>
-#include "output_files.h"
+#include "file_io/output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
-#include "read_and_repair_mesh.h"
+#include "file_io/read_and_repair_mesh.h"
 #include "reports.h"
 
 #ifdef SMDF_WITH_PETSC
@@ -46,6 +45,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <array>
 #include <map>
 #include <memory>
 #include <regex>
@@ -353,18 +353,19 @@ void write_file_order_outputs(const Options& o, const Repaired_mesh<Mesh>& input
 {
   if(!o.directions.empty())
   {
-    CGAL::Surface_mesh_direction_fields::internal::Number_writer w(outputs.stream(o.directions));
+    std::vector<std::array<double, 3> > in_file_order;
+    in_file_order.reserve(input.vertex_of_file_vertex.size());
     for(Vertex_index v : input.vertex_of_file_vertex)  // a merged or duplicated vertex: its first copy
     {
       if(v == Mesh::null_vertex())  // a point no face uses: the zero vector
       {
-        w.line(0., 0., 0.);
+        in_file_order.push_back({0., 0., 0.});
         continue;
       }
       const Vector_3& d = field.directions[std::size_t(v)];
-      w.line(d.x(), d.y(), d.z());
+      in_file_order.push_back({d.x(), d.y(), d.z()});
     }
-    w.flush();
+    SMDF::IO::write_vectors(outputs.stream(o.directions), in_file_order);
   }
   if(!o.singularities.empty())
   {
