@@ -74,6 +74,18 @@ matrix with the same sparsity pattern is factored again. Any other model of
 `SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT` works
 too, through a copy of each matrix.
 */
+/// \cond SKIP_IN_MANUAL
+// What depends on the default solver (the free function) lives in an inline
+// namespace named after it: two files of one program built with and without
+// CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD then get two distinct
+// functions, each with its own default, instead of one silently replacing
+// the other at link time (test_default_solvers).
+#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD)
+#  define CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE default_solver_cholmod
+#else
+#  define CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE default_solver_eigen
+#endif
+/// \endcond
 #if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD) && !defined(DOXYGEN_RUNNING)
 class Cholmod_supernodal_solver;
 typedef Cholmod_supernodal_solver Default_direction_field_solver;

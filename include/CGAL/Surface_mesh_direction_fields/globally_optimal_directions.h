@@ -291,6 +291,9 @@ the \f$ \lambda_t \f$ used and the alignment weight reached; and the timings.
 \warning All linear algebra is done in `double`, also with an exact kernel: coordinates are
          converted once, and the output vectors are built from doubles.
 */
+#ifndef DOXYGEN_RUNNING
+inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE {  // see Default_direction_field_solver
+#endif
 template <typename TriangleMesh, typename VertexDirectionMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Direction_field_result
 compute_globally_optimal_directions(const TriangleMesh& tmesh,
@@ -310,6 +313,9 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
   result.timings.total_ms += field.construction_ms();
   return result;
 }
+#ifndef DOXYGEN_RUNNING
+} // inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE
+#endif
 
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
