@@ -6,6 +6,8 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
+#include "file_io/messages.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -164,13 +166,7 @@ inline void print_help(std::ostream& os)
 }
 
 // A number, compactly, for messages (as the library's messages print them).
-// A number in a message, compactly ("1e+09", "0.5").
-inline std::string compact(double x)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
+
 
 template <typename T>
 T parse_number(const std::string& option, const std::string& text)

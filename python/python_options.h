@@ -8,16 +8,10 @@
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
-#include <cstdio>
+#include "file_io/messages.h"
+
 #include <string>
 
-// A number in a message as the program prints it ("1e+09", "0.5").
-inline std::string number_in_message(double x)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
 
 namespace {
 
@@ -63,7 +57,7 @@ Index_array integer_array(const py::object& value, const char* name)
     const double* x = f.data();
     for(py::ssize_t i = 0; i < f.size(); ++i)
       if(!(std::isfinite(x[i]) && std::floor(x[i]) == x[i] && std::abs(x[i]) < 9.0e15))
-        refuse(std::string(name) + " must hold integers, got " + number_in_message(x[i]));
+        refuse(std::string(name) + " must hold integers, got " + compact(x[i]));
   }
   else if(kind != 'i' && kind != 'u')
     throw py::type_error(std::string(name) + " must be an array of integers");
