@@ -20,6 +20,7 @@
 
 #include "command_line_options.h"
 #include "exchange_files.h"
+#include "file_io/optional_named_parameters.h"
 #include "file_io/output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
@@ -59,6 +60,7 @@ typedef Kernel::Vector_3 Vector_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
 typedef Mesh::Face_index Face_index;
+namespace onp = optional_named_parameters;
 
 namespace {
 
@@ -313,33 +315,30 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
   auto is_feature = CGAL::make_property_map(feature_storage);
   if(o.feature_angle > 0.)
     CGAL::Polygon_mesh_processing::detect_sharp_edges(input.mesh, o.feature_angle, is_feature);
-  auto with_features = [&](auto np) {
-    if(o.feature_angle > 0.)
-      return SMDF::compute_globally_optimal_directions(input.mesh, directions, np.edge_is_feature_map(is_feature));
-    return SMDF::compute_globally_optimal_directions(input.mesh, directions, np);
-  };
-  auto with_solver = [&](auto np) {
+  const Prescription prescription = o.prescribe.empty() ? Prescription() : read_prescription(o, input);
+  onp::Given_options<Face_index, decltype(CGAL::make_property_map(guidance)), decltype(is_feature)> given;
+  // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
+  if(o.weight_given) given.alignment_weight = o.weight;
+  else if(o.lambda_given) given.alignment_lambda = o.lambda;
+  if(!o.guidance.empty()) given.guidance = CGAL::make_property_map(guidance);
+  if(o.feature_angle > 0.) given.features = is_feature;
+  if(!o.prescribe.empty())
+  {
+    given.prescribed = &prescription.faces;
+    given.loop_turns = &prescription.loop_turns;
+  }
+  auto compute = [&](auto np) {
 #ifdef SMDF_WITH_PETSC
-    if(o.solver == "petsc") return with_features(np.distributed_solver(processes.distributed_solver()));
+    if(o.solver == "petsc" && o.prescribe.empty())  // a prescription: one process (checked)
+      return SMDF::compute_globally_optimal_directions(input.mesh, directions,
+                                                       np.distributed_solver(processes.distributed_solver()));
 #endif
     (void)processes;
-    return with_features(np);
+    return SMDF::compute_globally_optimal_directions(input.mesh, directions, np);
   };
-  const Prescription prescription = o.prescribe.empty() ? Prescription() : read_prescription(o, input);
-  auto with_prescription = [&](auto np) {
-    if(o.prescribe.empty()) return with_solver(np);
-    return with_features(  // one process (checked)
-      np.prescribed_singularities(prescription.faces).prescribed_loop_turns(prescription.loop_turns));
-  };
-  auto with_guidance = [&](auto np) {
-    if(o.guidance.empty()) return with_prescription(np);
-    return with_prescription(np.vertex_guidance_map(CGAL::make_property_map(guidance)));
-  };
-  // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
   try
   {
-    field.result = o.weight_given ? with_guidance(base.alignment_weight(o.weight))
-                   : o.lambda_given ? with_guidance(base.alignment_lambda(o.lambda)) : with_guidance(base);
+    field.result = onp::compute_with(given, base, compute);
   }
   catch(const SMDF::Invalid_input_error& e)
   {
@@ -565,6 +564,10 @@ int main(int argc, char** argv)
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
   SuiteSparse_config.printf_func = print_to_stderr;
 #endif
+  // The program is the only user of OpenBLAS in its process: it lets the
+  // factorization keep OpenBLAS to one thread where that is faster
+  // (openblas_thread_control.h).
+  CGAL::Surface_mesh_direction_fields::set_openblas_thread_control(true);
   const int status = run(argc, argv);
   if(address_space_is_limited())
   {

@@ -1,19 +1,63 @@
 // Python keyword arguments -> Options, and Options -> the named parameters
-// of Globally_optimal_direction_field::compute(). Named parameters are
-// types, so each optional one present or absent is a branch taken at run
-// time (guidance, lambda_t or alignment_weight, constraints, features,
-// prescribed singularities).
+// of Globally_optimal_direction_field::compute() (the optional ones through
+// file_io/optional_named_parameters.h, as the program passes them).
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_OPTIONS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_OPTIONS_H
+
+#include "python_mesh.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 #include "file_io/messages.h"
+#include "file_io/optional_named_parameters.h"
 
+#include <initializer_list>
 #include <string>
 
-
 namespace {
+
+// Every option of compute(), read from Python's keyword arguments.
+struct Options
+{
+  int degree = 4;
+  double s = 0.;
+  SMDF::Principal_curvature_alignment align = SMDF::Principal_curvature_alignment::NONE;
+  SMDF::Principal_curvature_estimate curvature_estimate = SMDF::Principal_curvature_estimate::QUADRIC_FIT;
+  SMDF::Boundary_alignment boundary = SMDF::Boundary_alignment::NONE;
+  std::optional<double> lambda_t, alignment_weight;
+  bool eigenvalue_bound = false;
+  std::vector<Kernel::Vector_3> guidance;                  // empty: none
+  std::vector<std::pair<Vertex_index, Kernel::Vector_3> > constraints;
+  std::vector<Edge_index> features;                        // empty: none
+  bool has_features = false;
+  std::optional<double> feature_angle;
+  std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
+  std::optional<std::vector<std::pair<std::size_t, int> > > loop_turns;
+  unsigned int max_iterations = 1000;
+  double tolerance = 1e-10;
+  unsigned int seed = 0;
+};
+
+// A keyword argument of the type asked for, or a TypeError naming it.
+template <typename T>
+T option_as(const py::handle& value, const char* name, const char* what)
+{
+  try { return py::cast<T>(value); }
+  catch(const py::cast_error&) { throw py::type_error(std::string(name) + " must be " + what); }
+}
+
+template <typename Enum>
+Enum choose(const std::string& value, const char* option, std::initializer_list<std::pair<const char*, Enum> > names)
+{
+  std::string known;
+  for(const auto& n : names)
+  {
+    if(value == n.first) return n.second;
+    known += std::string(known.empty() ? "" : ", ") + "'" + n.first + "'";
+  }
+  refuse(std::string(option) + " must be one of " + known + " (got '" + value + "')");
+}
+
 
 // The property maps of one computation, on the module's own copy of the mesh.
 struct Maps
@@ -222,6 +266,9 @@ Options read_options(const py::dict& kw, Mesh& mesh)
   if((o.lambda_t || o.alignment_weight) && o.align == SMDF::Principal_curvature_alignment::NONE && o.guidance.empty())
     refuse(std::string(o.lambda_t ? "lambda_t" : "alignment_weight") +
            " needs something to align to (align or guidance)");
+  if(o.prescribed && (o.lambda_t || o.alignment_weight || o.eigenvalue_bound))
+    refuse("prescribed singularities take no lambda_t, alignment_weight or eigenvalue_bound");
+  if(o.lambda_t && o.alignment_weight) refuse("give either lambda_t or alignment_weight, not both");
   return o;
 }
 
@@ -253,50 +300,10 @@ void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
   }
 }
 
-// The chain of optional named parameters, one step per option; `call(np)`
-// computes the field (the class's compute() or the free function).
-template <typename Call, typename NP>
-SMDF::Direction_field_result with_prescribed(const Call& call, const Options& o, const Maps&, const NP& np)
-{
-  if(o.prescribed && o.loop_turns)
-    return call(np.prescribed_singularities(*o.prescribed).prescribed_loop_turns(*o.loop_turns));
-  if(o.prescribed) return call(np.prescribed_singularities(*o.prescribed));
-  return call(np);
-}
-
-template <typename Call, typename NP>
-SMDF::Direction_field_result with_features(const Call& field, const Options& o, const Maps& maps, const NP& np)
-{
-  if(o.has_features || o.feature_angle) return with_prescribed(field, o, maps, np.edge_is_feature_map(maps.feature));
-  return with_prescribed(field, o, maps, np);
-}
-
-template <typename Call, typename NP>
-SMDF::Direction_field_result with_constraints(const Call& field, const Options& o, const Maps& maps, const NP& np)
-{
-  if(!o.constraints.empty())
-    return with_features(field, o, maps,
-                         np.vertex_is_constrained_map(maps.constrained).vertex_constrained_direction_map(maps.constraint));
-  return with_features(field, o, maps, np);
-}
-
-template <typename Call, typename NP>
-SMDF::Direction_field_result with_alignment(const Call& field, const Options& o, const Maps& maps, const NP& np)
-{
-  if(o.prescribed)  // refused with a prescription: not instantiated there
-  {
-    if(o.lambda_t || o.alignment_weight || o.eigenvalue_bound)
-      refuse("prescribed singularities take no lambda_t, alignment_weight or eigenvalue_bound");
-    return with_constraints(field, o, maps, np);
-  }
-  if(o.lambda_t && o.alignment_weight) refuse("give either lambda_t or alignment_weight, not both");
-  if(o.lambda_t) return with_constraints(field, o, maps, np.alignment_lambda(*o.lambda_t));
-  if(o.alignment_weight) return with_constraints(field, o, maps, np.alignment_weight(*o.alignment_weight));
-  return with_constraints(field, o, maps, np);
-}
-
+// compute() with the named parameters of the options; `call(np)` computes
+// the field (the class's compute() or the free function).
 template <typename Call, typename Out>
-SMDF::Direction_field_result compute_field(const Call& field, const Options& o, const Maps& maps, Out singularities)
+SMDF::Direction_field_result compute_field(const Call& call, const Options& o, const Maps& maps, Out singularities)
 {
   const auto np = CGAL::parameters::degree(o.degree)
                     .smoothness_parameter(o.s)
@@ -309,8 +316,18 @@ SMDF::Direction_field_result compute_field(const Call& field, const Options& o, 
                     .random_seed(o.seed)
                     .vertex_magnitude_map(maps.magnitude)
                     .singularities_output_iterator(singularities);
-  if(!o.guidance.empty()) return with_alignment(field, o, maps, np.vertex_guidance_map(maps.guidance));
-  return with_alignment(field, o, maps, np);
+  typedef Mesh::Property_map<Vertex_index, Kernel::Vector_3> Vector_map;
+  typedef Mesh::Property_map<Vertex_index, bool> Bool_map;
+  optional_named_parameters::Given_options<Face_index, Vector_map, Mesh::Property_map<Edge_index, bool>,
+                                           std::pair<Bool_map, Vector_map> > given;
+  given.alignment_weight = o.alignment_weight;
+  given.alignment_lambda = o.lambda_t;
+  if(!o.guidance.empty()) given.guidance = maps.guidance;
+  if(!o.constraints.empty()) given.constraints = std::make_pair(maps.constrained, maps.constraint);
+  if(o.has_features || o.feature_angle) given.features = maps.feature;
+  if(o.prescribed) given.prescribed = &*o.prescribed;
+  if(o.loop_turns) given.loop_turns = &*o.loop_turns;
+  return optional_named_parameters::compute_with(given, np, call);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_RESULTS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_RESULTS_H
 
+#include "python_options.h"
+
 namespace {
 
 struct Result

@@ -7,7 +7,10 @@
 //
 //   usage: benchmark_direction_fields [--degree N] [--s S] [--repeat R] [--huge-pages | --no-huge-pages]
 //                                     [--backend default|ldlt|both] [--subdivide K] [--csv FILE]
-//                                     [--align curvature [--lambda L]] [MESH...]
+//                                     [--align curvature [--lambda L]] [--openblas-thread-control on|off]
+//                                     [MESH...]
+// --openblas-thread-control: set_openblas_thread_control() (on by default, as
+// in the direction_field program).
 // A mesh given as FILE@K is FILE after K steps of Loop subdivision (4^K times the faces).
 // With no mesh: every mesh of ../shared/data/meshes, then nefertiti_sub4.off@1 (1.6 million faces).
 //
@@ -191,6 +194,7 @@ int main(int argc, char** argv)
   double& s = request.s;
   std::string backend = "default", csv_file;
   bool huge_pages = false;
+  bool openblas_threads = true;  // as the direction_field program
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
@@ -202,6 +206,7 @@ int main(int argc, char** argv)
     else if(a == "--csv" && i + 1 < argc) csv_file = argv[++i];
     else if(a == "--no-huge-pages") huge_pages = false;
     else if(a == "--huge-pages") huge_pages = true;
+    else if(a == "--openblas-thread-control" && i + 1 < argc) openblas_threads = std::string(argv[++i]) != "off";
     else if(a == "--align" && i + 1 < argc) request.aligned = std::string(argv[++i]) == "curvature";
     else if(a == "--lambda" && i + 1 < argc) { request.lambda = std::stod(argv[++i]); request.lambda_given = true; }
     else if(a == "--help") { std::cout << "see the comment at the top of benchmark_direction_fields.cpp\n"; return 0; }
@@ -214,6 +219,9 @@ int main(int argc, char** argv)
     execv("/proc/self/exe", argv);
     unsetenv("GLIBC_TUNABLES");
   }
+  CGAL::Surface_mesh_direction_fields::set_openblas_thread_control(openblas_threads);
+  std::cout << "OpenBLAS thread control: "
+            << (CGAL::Surface_mesh_direction_fields::openblas_thread_control() ? "on" : "off") << "\n";
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   std::cout << "malloc: " << (tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb=1") != nullptr
                                 ? "transparent huge pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1)"

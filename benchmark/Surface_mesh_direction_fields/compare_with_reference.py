@@ -22,13 +22,16 @@ each process instead (fieldgen's median, the package's best of K).
 --benchmark BIN, given more than once (say the build of an earlier commit and
 the current one), runs each of them after fieldgen in every repetition: a
 change is measured before and after against the reference in one run, one
-row per binary (the column `package` names it).
+row per binary (the column `package` names it). BIN may carry options in
+one argument: --benchmark "build/bin/benchmark_direction_fields
+--openblas-thread-control off".
 """
 import argparse
 import csv
 import io
 import os
 import re
+import shlex
 import statistics
 import subprocess
 import sys
@@ -48,9 +51,9 @@ def run_fieldgen(anchors, obj, degree, mode, warm):
 
 
 def run_package(benchmark, mesh, degree, aligned, warm):
-    args = [benchmark, "--degree", str(degree), "--repeat", str(warm), mesh]
+    args = shlex.split(benchmark) + ["--degree", str(degree), "--repeat", str(warm), mesh]
     if aligned:
-        args[1:1] = ["--align", "curvature"]
+        args[-1:-1] = ["--align", "curvature"]
     out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
     rows = list(csv.DictReader(io.StringIO(out[out.index("mesh,vertices"):])))
     row = rows[0]
@@ -67,7 +70,8 @@ def main():
     parser.add_argument("meshes", nargs="+")
     a = parser.parse_args()
     a.benchmark = a.benchmark or [os.path.join(HERE, "..", "..", "build", "bin", "benchmark_direction_fields")]
-    for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj")] + a.benchmark:
+    for tool in [os.path.join(a.anchors, "fg_driver", "fg_driver_patched"), os.path.join(a.anchors, "off2obj")] + \
+            [shlex.split(b)[0] for b in a.benchmark]:
         if not os.access(tool, os.X_OK):
             sys.exit(f"compare_with_reference.py: {tool} is missing (see the docstring)")
     print("mesh,field,package,reference_ms,package_ms,time_ratio,reference_peak_mb,package_peak_mb,memory_ratio,"

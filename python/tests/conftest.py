@@ -1,3 +1,25 @@
+"""Options of the module's tests, and CTest's SKIP: a run whose tests all passed
+but left some out because the program or the shared meshes were missing exits
+77 (test_python_module's SKIP_RETURN_CODE), never a silent pass."""
+import pytest
+
+# the start of every skip reason that means "an input of the test is missing"
+MISSING_INPUT = "missing input: "
+missing_inputs = []
+
+
 def pytest_addoption(parser):
     parser.addoption("--direction-field", default="", help="the command-line program, to compare with")
     parser.addoption("--shared", default="", help="the shared mesh folder (tests that need it skip without it)")
+
+
+def pytest_runtest_logreport(report):
+    if report.skipped and MISSING_INPUT in str(report.longrepr):
+        missing_inputs.append(report.nodeid)
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_sessionfinish(session, exitstatus):
+    if exitstatus == 0 and missing_inputs:
+        print(f"\nSKIPPED: {len(missing_inputs)} tests without their inputs (program or shared meshes)")
+        session.exitstatus = 77

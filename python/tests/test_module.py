@@ -10,6 +10,12 @@ import numpy as np
 import pytest
 
 import surface_mesh_direction_fields as smdf
+from conftest import MISSING_INPUT
+
+# The program lets the factorization set OpenBLAS's threads; with the same
+# setting the module gives the same digits (the module's default is off).
+THREAD_CONTROL_BY_DEFAULT = smdf.openblas_thread_control()
+smdf.set_openblas_thread_control(True)
 
 
 def octahedron():
@@ -53,7 +59,7 @@ def torus(n=24, m=12, R=1.0, r=0.4):
 def program(request):
     path = request.config.getoption("--direction-field")
     if not path:
-        pytest.skip("no direction_field given")
+        pytest.skip(MISSING_INPUT + "no direction_field given")
     return path
 
 
@@ -61,7 +67,7 @@ def program(request):
 def shared(request):
     folder = request.config.getoption("--shared")
     if not folder or not os.path.isdir(folder):
-        pytest.skip("no shared meshes")
+        pytest.skip(MISSING_INPUT + "no shared meshes")
     return folder
 
 
@@ -131,6 +137,21 @@ def test_more_options_same_field_as_the_program(program, shared, tmp_path, name,
     directions, singular, report = run_program(program, mesh, str(tmp_path), *options)
     r = smdf.compute_globally_optimal_directions(V, F, **python)
     assert np.array_equal(r.directions, directions) and np.array_equal(r.singular_faces, singular)
+
+
+def test_openblas_thread_control_is_opt_in(shared):
+    assert THREAD_CONTROL_BY_DEFAULT is False
+    V, F, _ = smdf.read_mesh(os.path.join(shared, "fandisk.off"))
+    controlled = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    smdf.set_openblas_thread_control(False)
+    try:
+        assert not smdf.openblas_thread_control()
+        left_alone = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    finally:
+        smdf.set_openblas_thread_control(True)
+    # the same field up to the last digits: only the order of the sums differs
+    assert np.array_equal(controlled.singular_faces, left_alone.singular_faces)
+    assert np.abs(controlled.directions - left_alone.directions).max() < 1e-8
 
 
 def test_options_change_the_field():
@@ -217,7 +238,7 @@ def run_with_blas_threads(script, shared):
     env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
     paths = [os.path.join(shared, name) for name in ("nefertiti.off", "fertility.off")]
     if not all(os.path.exists(p) for p in paths):
-        pytest.skip("nefertiti.off or fertility.off missing")
+        pytest.skip(MISSING_INPUT + "nefertiti.off or fertility.off")
     r = subprocess.run([sys.executable, "-c", script] + paths, env=env, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr[-2000:]
 

@@ -38,6 +38,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
 #include <memory>
@@ -106,9 +107,15 @@ int main()
     check_parallel_supernodal_solve(report, 200);
     check_cholmod_solver_concept(report);
     check_blas_threads_restored(report);
-    check_parallel_factorization(report, 3);
-    check_parallel_factorization(report, 40);
-    check_parallel_factorization(report, 200);
+    // the subtrees with Eigen's kernels (the default), then with OpenBLAS on one thread
+    for(bool thread_control : {false, true})
+    {
+      SMDF::set_openblas_thread_control(thread_control);
+      check_parallel_factorization(report, 3);
+      check_parallel_factorization(report, 40);
+      check_parallel_factorization(report, 200);
+    }
+    SMDF::set_openblas_thread_control(false);
     check_single_precision_factorization(report, 200);
 #endif
   }

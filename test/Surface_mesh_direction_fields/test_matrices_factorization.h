@@ -166,8 +166,10 @@ static void check_cholmod_solver_concept(Test_report& report)
   report.check(!Solver().factor(Solver::Matrix(indefinite), D), "Cholmod_supernodal_solver: factor() refuses an indefinite matrix");
 }
 
-// The one process-wide setting the factorization makes (dense_kernels.h):
-// OpenBLAS on one thread while the subtrees are factored. Outside the
+// The one process-wide setting the factorization may make (dense_kernels.h):
+// OpenBLAS on one thread while the subtrees are factored. Off by default: a
+// thread watching OpenBLAS's number of threads during factorizations never
+// sees it change. Switched on (openblas_thread_control.h): outside the
 // factorization the user's number of threads is in force again, also after
 // factorizations running concurrently on two threads of the program.
 static void check_blas_threads_restored(Test_report& report)
@@ -183,6 +185,21 @@ static void check_blas_threads_restored(Test_report& report)
     factored.factor(S);
     return factored.factored_in_parallel();
   };
+  report.check(!SMDF::openblas_thread_control(), "OpenBLAS's thread control is off until a program opts in");
+  {
+    std::atomic<bool> done(false), changed(false);
+    std::thread watcher([&] {
+      while(!done.load())
+        if(openblas_get_num_threads() != 3) changed.store(true);
+    });
+    bool factored = true;
+    for(int i = 0; i < 5; ++i) factored = factor_once() && factored;
+    done.store(true);
+    watcher.join();
+    report.check(factored && !changed.load(),
+                 "left off, five factorizations never change OpenBLAS's number of threads (3)");
+  }
+  SMDF::set_openblas_thread_control(true);
   const bool by_package = factor_once();
   const int after_one = openblas_get_num_threads();
   bool both = true;
@@ -194,10 +211,11 @@ static void check_blas_threads_restored(Test_report& report)
     both = first && second;
   }
   const int after_two = openblas_get_num_threads();
+  SMDF::set_openblas_thread_control(false);
   openblas_set_num_threads(original);
   report.check(by_package && both && after_one == 3 && after_two == 3,
-               "OpenBLAS's number of threads (3) is given back after one factorization (" + std::to_string(after_one) +
-                 ") and after two concurrent ones (" + std::to_string(after_two) + ")");
+               "switched on, OpenBLAS's number of threads (3) is given back after one factorization (" +
+                 std::to_string(after_one) + ") and after two concurrent ones (" + std::to_string(after_two) + ")");
 #else
   (void)report;
 #endif

@@ -18,14 +18,18 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
 #include <complex>
 #include <cstddef>
+#include <fstream>
+#include <limits>
 #include <mutex>
 #include <thread>
 #include <type_traits>
 
 #if defined(__unix__) || defined(__APPLE__)
-#include <sys/mman.h>
+#include <sys/resource.h>
+#include <unistd.h>
 #endif
 
 // The four dense kernels of a supernodal Cholesky factorization (complex
@@ -43,18 +47,18 @@
 // Where the factorization's own threads work side by side (the independent
 // subtrees of the elimination tree, whose supernodes are small), a
 // multithreaded BLAS called from each of them at once makes them wait for
-// each other (the benchmark's README has the cost). Two ways out, chosen at
-// build time:
-// - with OpenBLAS (CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS,
-//   defined by the CMake target when it links OpenBLAS), OpenBLAS is asked
-//   for one thread while the subtrees are factored (`Single_threaded_blas`),
-//   and its previous number of threads is given back afterwards. This is a
-//   process-wide setting: another thread of the program that calls OpenBLAS
-//   during that phase runs it on one thread. It is the faster of the two
-//   (the benchmark's README);
-// - otherwise the subtrees use the same kernels written with Eigen
+// each other (the developer notes). Two ways out:
+// - by default the subtrees use the same kernels written with Eigen
 //   (`Eigen_dense_kernels`), which always run on the calling thread, and
-//   nothing outside the package changes.
+//   nothing outside the package changes;
+// - where the user opted in (`set_openblas_thread_control()`, public header
+//   openblas_thread_control.h) and OpenBLAS is linked with its thread control
+//   (CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS, defined by the
+//   CMake target), OpenBLAS is asked for one thread while the subtrees are
+//   factored (`Single_threaded_blas`) and its previous number of threads is
+//   given back afterwards. This is a process-wide setting: another thread of
+//   the program that calls OpenBLAS during that phase runs it on one thread.
+//   It is the faster of the two.
 // The large supernodes at the top of the tree, factored one at a time, use
 // the BLAS with its own threads in both cases.
 
@@ -76,33 +80,62 @@ constexpr bool has_dense_kernels = true;
 constexpr bool has_dense_kernels = false;
 #endif
 #if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_BLAS) && defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS)
-constexpr bool controls_blas_threads = true;
+constexpr bool can_control_blas_threads = true;
 #else
-constexpr bool controls_blas_threads = false;
+constexpr bool can_control_blas_threads = false;
 #endif
+
+// The user's choice (openblas_thread_control.h): off until a program opts in.
+inline std::atomic<bool>& openblas_thread_control_requested()
+{
+  static std::atomic<bool> requested(false);
+  return requested;
+}
+
+// Whether the factorization sets OpenBLAS's number of threads now.
+inline bool controls_blas_threads()
+{
+  return can_control_blas_threads && openblas_thread_control_requested().load();
+}
+
+// The address space the process may still map, read from its limit and its
+// current size (/proc/self/statm) without mapping anything; the largest
+// std::size_t where there is no limit, 0 where the size cannot be read.
+inline std::size_t address_space_left()
+{
+#if defined(__unix__) || defined(__APPLE__)
+  rlimit limit;
+  if(getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return (std::numeric_limits<std::size_t>::max)();
+  std::size_t pages = 0;
+  std::ifstream statm("/proc/self/statm");
+  if(!(statm >> pages)) return 0;
+  const std::size_t in_use = pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const std::size_t allowed = static_cast<std::size_t>(limit.rlim_cur);
+  return allowed > in_use ? allowed - in_use : 0;
+#else
+  return (std::numeric_limits<std::size_t>::max)();
+#endif
+}
 
 // Whether the BLAS can be called without a hang under memory pressure.
 // OpenBLAS takes a work buffer for each calling thread the first time a
 // level-3 routine runs there (128 MiB on x86-64 with Debian's 0.3.21), and
 // when it cannot map it, it retries forever (both threads were seen looping
 // in blas_memory_alloc under zpotrf_ with an address-space limit). So before
-// a factorization, the package checks that address space for such buffers
-// (160 MiB for each hardware thread and one more) can be reserved; where it
-// cannot, the factorization and its solves avoid the BLAS (Eigen's kernels,
-// the package's solve), and a shortage shows as std::bad_alloc instead.
-// The reservation is released at once and touches no memory.
-// `extra_bytes` is reserved beside it: what the caller is about to allocate
+// a factorization, the package checks that the process's address-space limit
+// leaves room for such buffers (160 MiB for each hardware thread and one
+// more); where it does not, the factorization and its solves avoid the BLAS
+// (Eigen's kernels, the package's solve), and a shortage shows as
+// std::bad_alloc instead. The check only reads the limit and the process's
+// size: nothing is mapped, so no other thread can see it.
+// `extra_bytes` is counted beside it: what the caller is about to allocate
 // before the BLAS runs (a distributed factor, for one).
 inline bool blas_work_space_available(std::size_t extra_bytes = 0)
 {
-#if defined(__unix__) || defined(__APPLE__)
   const std::size_t threads = (std::max)(1u, std::thread::hardware_concurrency()) + 1;
-  const std::size_t bytes = threads * (std::size_t(160) << 20) + extra_bytes;
-  void* reserved = mmap(nullptr, bytes, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if(reserved == MAP_FAILED) return false;
-  munmap(reserved, bytes);
-#endif
-  return true;
+  const std::size_t needed = threads * (std::size_t(160) << 20);
+  const std::size_t left = address_space_left();
+  return left >= needed && left - needed >= extra_bytes;
 }
 
 // For its lifetime, OpenBLAS runs on one thread (where the package controls

@@ -289,20 +289,24 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
   return failed;
 }
 
-// The same with the kernels of dense_kernels.h: the BLAS at the top and, where
-// the package keeps OpenBLAS to one thread, in the subtrees (Eigen's there
-// otherwise); Eigen's everywhere if `use_blas` is false or the BLAS is not linked.
+// The same with the kernels of dense_kernels.h: the BLAS at the top and,
+// where the user let the package keep OpenBLAS to one thread, in the
+// subtrees (Eigen's there otherwise); Eigen's everywhere if `use_blas` is
+// false or the BLAS is not linked.
 template <typename Index, typename Scalar>
 std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
                                     const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
                                     const Supernodal_solve_plan& plan, bool use_blas = true)
 {
   typedef typename Scalar::value_type Real;
-  typedef std::conditional_t<has_dense_kernels, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Top_kernels;
-  typedef std::conditional_t<controls_blas_threads, Dense_kernels<Real>, Eigen_dense_kernels<Real> > Subtree_kernels;
+  typedef Eigen_dense_kernels<Real> Eigen_kernels;
+  typedef std::conditional_t<has_dense_kernels, Dense_kernels<Real>, Eigen_kernels> Top_kernels;
+  typedef std::conditional_t<can_control_blas_threads, Dense_kernels<Real>, Eigen_kernels> Controlled_kernels;
   if(!use_blas)
-    return supernodal_factorize_with<Eigen_dense_kernels<Real>, Eigen_dense_kernels<Real> >(L, values, lower, updates, plan);
-  return supernodal_factorize_with<Top_kernels, Subtree_kernels>(L, values, lower, updates, plan);
+    return supernodal_factorize_with<Eigen_kernels, Eigen_kernels>(L, values, lower, updates, plan);
+  if(controls_blas_threads())
+    return supernodal_factorize_with<Top_kernels, Controlled_kernels>(L, values, lower, updates, plan);
+  return supernodal_factorize_with<Top_kernels, Eigen_kernels>(L, values, lower, updates, plan);
 }
 
 } // namespace internal
