@@ -4,7 +4,7 @@
 // parameters of compute_globally_optimal_directions(), in Python's spelling.
 #include "python_files.h"
 
-PYBIND11_MODULE(surface_mesh_direction_fields, m)
+PYBIND11_MODULE(_core, m)
 {
   m.doc() = "Globally optimal smooth n-direction fields (vector, line, cross fields) on triangle meshes, after\n"
             "Knoeppel, Crane, Pinkall and Schroeder (2013), from CGAL's Surface_mesh_direction_fields package.";

@@ -11,6 +11,16 @@ missing_inputs = []
 def pytest_addoption(parser):
     parser.addoption("--direction-field", default="", help="the command-line program, to compare with")
     parser.addoption("--shared", default="", help="the shared mesh folder (tests that need it skip without it)")
+    parser.addoption("--installed-in", default="", help="a virtual environment the package must be imported from")
+
+
+def pytest_configure(config):
+    # the tests of an installed package run on that package, not on a build folder's
+    folder = config.getoption("--installed-in")
+    if folder:
+        import surface_mesh_direction_fields as smdf
+        if not smdf.__file__.startswith(folder):
+            raise pytest.UsageError(f"surface_mesh_direction_fields imported from {smdf.__file__}, not {folder}")
 
 
 def pytest_runtest_logreport(report):

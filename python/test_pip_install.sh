@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The package as pip installs it: into a fresh virtual environment of Debian's
+# Python (with its site packages: numpy, pytest; --no-index: nothing
+# downloaded), building the extension in the test build's CMake folder. Then
+# pip knows it (list, version metadata), mypy sees its types (the typed
+# example passes --strict, a wrong call is flagged), the module's tests pass
+# against the installed package, pip uninstall removes it; and the README's
+# CMake route (cmake --install --component python) gives an importable package.
+#   usage: test_pip_install.sh SOURCE_DIR BUILD_DIR WORK_DIR PROGRAM SHARED_MESH_DIR
+set -euo pipefail
+source=$1 build=$2 work=$3 program=$4 shared=$5
+for tool in /usr/bin/python3 mypy; do
+  command -v "$tool" > /dev/null || { echo "SKIPPED: $tool missing (tools/install_dependencies.sh tests)"; exit 77; }
+done
+/usr/bin/python3 -c "import venv, ensurepip" 2> /dev/null || { echo "SKIPPED: python3-venv missing"; exit 77; }
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+fail() { echo "FAILED: $*"; exit 1; }
+unset PYTHONPATH
+
+/usr/bin/python3 -m venv --system-site-packages venv
+py="$work/venv/bin/python"
+(cd "$source" && SMDF_CMAKE_BUILD_DIR="$build" "$py" -m pip install --no-build-isolation --no-index .) > pip.log 2>&1 \
+  || { tail -20 pip.log; fail "pip install"; }
+listed=$("$py" -m pip list 2> /dev/null)
+grep -q "^surface-mesh-direction-fields " <<< "$listed" || fail "pip list does not show the package"
+"$py" - "$work/venv" << 'PY' || fail "the installed package"
+import importlib.metadata, os, sys
+import surface_mesh_direction_fields as smdf
+assert smdf.__file__.startswith(sys.argv[1]), smdf.__file__
+assert importlib.metadata.version("surface-mesh-direction-fields") == smdf.__version__
+folder = os.path.dirname(smdf.__file__)
+assert os.path.exists(os.path.join(folder, "py.typed")) and os.path.exists(os.path.join(folder, "__init__.pyi"))
+V = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]
+r = smdf.compute_globally_optimal_directions(V, [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], degree=4)
+assert r.index_sum == 8, r.index_sum  # n chi on a tetrahedron
+PY
+echo "installed: $("$py" -m pip show surface-mesh-direction-fields | grep -E '^(Name|Version|Location)' | tr '\n' ' ')"
+
+mypy --python-executable "$py" --strict "$source/examples/Surface_mesh_direction_fields/python/cross_field.py" \
+  || fail "mypy --strict on the typed example"
+printf 'import surface_mesh_direction_fields as smdf\nsmdf.read_mesh(3)\n' > wrong_call.py
+if mypy --python-executable "$py" wrong_call.py > mypy_wrong.txt; then fail "mypy accepted read_mesh(3)"; fi
+grep -q 'Argument 1 to "read_mesh" has incompatible type "int"' mypy_wrong.txt || { cat mypy_wrong.txt; fail "mypy's message"; }
+
+"$py" -m pytest -q -p no:cacheprovider "$source/python/tests" --direction-field "$program" --shared "$shared" \
+  --installed-in "$work/venv" || exit $?
+
+"$py" -m pip uninstall -y surface-mesh-direction-fields > /dev/null
+if (cd / && "$py" -c "import surface_mesh_direction_fields" 2> /dev/null); then fail "still importable after pip uninstall"; fi
+
+cmake --install "$build" --component python --prefix "$work/prefix" > /dev/null
+site=$(find "$work/prefix" -type d -name surface_mesh_direction_fields)
+PYTHONPATH=$(dirname "$site") /usr/bin/python3 -c "import surface_mesh_direction_fields as s; assert s.__file__.startswith('$work/prefix')" \
+  || fail "cmake --install --component python"
+echo "pip install, pip list, metadata, mypy, the module's tests, pip uninstall, cmake --install: all passed"
