@@ -12,6 +12,7 @@
 #include "file_io/optional_named_parameters.h"
 
 #include <initializer_list>
+#include <memory>
 #include <string>
 
 namespace {
@@ -33,6 +34,8 @@ struct Options
   std::optional<double> feature_angle;
   std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
   std::optional<std::vector<std::pair<std::size_t, int> > > loop_turns;
+  double intrinsic_mollification = 1e-6;
+  py::object progress = py::none();  // None or a callable(fraction)
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
   unsigned int seed = 0;
@@ -219,8 +222,8 @@ void read_enumerations(const py::dict& kw, Options& o)
 
 const char* const option_names[] = {"degree", "s", "align", "curvature_estimate", "boundary", "guidance",
                                     "alignment_weight", "lambda_t", "eigenvalue_bound", "constraints",
-                                    "feature_edges", "feature_angle", "prescribed", "prescribed_loop_turns", "max_iterations", "tolerance",
-                                    "seed"};
+                                    "feature_edges", "feature_angle", "prescribed", "prescribed_loop_turns",
+                                    "intrinsic_mollification", "max_iterations", "tolerance", "seed", "progress"};
 
 // The keyword arguments of compute() (an unknown one is a TypeError, as Python's own).
 Options read_options(const py::dict& kw, Mesh& mesh)
@@ -259,6 +262,13 @@ Options read_options(const py::dict& kw, Mesh& mesh)
     if(!o.prescribed) refuse("prescribed_loop_turns applies with prescribed only (the smoothest and aligned fields "
                              "choose their own turns)");
     read_loop_turns(kw["prescribed_loop_turns"], o);
+  }
+  if(kw.contains("intrinsic_mollification"))
+    o.intrinsic_mollification = option_as<double>(kw["intrinsic_mollification"], "intrinsic_mollification", "a number");
+  if(given("progress"))
+  {
+    if(!PyCallable_Check(kw["progress"].ptr())) throw py::type_error("progress must be a callable(fraction) or None");
+    o.progress = kw["progress"];
   }
   if(kw.contains("max_iterations")) o.max_iterations = count_option(kw["max_iterations"], "max_iterations");
   if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
@@ -300,10 +310,48 @@ void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
   }
 }
 
+// The C++ side's progress_callback for one computation, called on the
+// computing thread without the GIL: it takes the GIL, runs Python's signal
+// handlers (Ctrl-C raises KeyboardInterrupt there) and the user's progress
+// callable; an exception from either stops the computation and is kept, to
+// be raised once the call has unwound (see `raise_if_stopped()`).
+class Python_progress
+{
+public:
+  explicit Python_progress(const py::object& user) : m_user(user) {}
+
+  bool operator()(double fraction)
+  {
+    py::gil_scoped_acquire gil;
+    try
+    {
+      if(PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if(!m_user.is_none()) m_user(fraction);
+      return true;
+    }
+    catch(py::error_already_set& e)
+    {
+      m_error = std::make_unique<py::error_already_set>(std::move(e));
+      return false;
+    }
+  }
+
+  // with the GIL held: the Python exception that stopped the computation
+  void raise_if_stopped()
+  {
+    if(m_error) throw py::error_already_set(std::move(*m_error));
+  }
+
+private:
+  py::object m_user;
+  std::unique_ptr<py::error_already_set> m_error;
+};
+
 // compute() with the named parameters of the options; `call(np)` computes
 // the field (the class's compute() or the free function).
 template <typename Call, typename Out>
-SMDF::Direction_field_result compute_field(const Call& call, const Options& o, const Maps& maps, Out singularities)
+SMDF::Direction_field_result compute_field(const Call& call, const Options& o, const Maps& maps, Out singularities,
+                                           Python_progress& progress)
 {
   const auto np = CGAL::parameters::degree(o.degree)
                     .smoothness_parameter(o.s)
@@ -314,6 +362,8 @@ SMDF::Direction_field_result compute_field(const Call& call, const Options& o, c
                     .number_of_iterations(o.max_iterations)
                     .residual_tolerance(o.tolerance)
                     .random_seed(o.seed)
+                    .intrinsic_mollification(o.intrinsic_mollification)
+                    .progress_callback([&progress](double fraction) { return progress(fraction); })
                     .vertex_magnitude_map(maps.magnitude)
                     .singularities_output_iterator(singularities);
   typedef Mesh::Property_map<Vertex_index, Kernel::Vector_3> Vector_map;

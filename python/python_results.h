@@ -70,6 +70,35 @@ Result make_result(Field_values values)
   return r;
 }
 
+// A message of the C++ library with its named parameters called by the
+// keywords a Python user wrote.
+std::string in_python_names(std::string message)
+{
+  static const std::pair<const char*, const char*> names[] = {
+    {"vertex_guidance_map", "guidance"}, {"alignment_lambda", "lambda_t"},
+    {"prescribed_singularities", "prescribed"}, {"vertex_is_constrained_map", "constraints"},
+    {"vertex_constrained_direction_map", "constraints"}, {"edge_is_feature_map", "feature_edges"},
+    {"smoothness_parameter", "s"}, {"number_of_iterations", "max_iterations"},
+    {"residual_tolerance", "tolerance"}, {"random_seed", "seed"}, {"principal_curvature_alignment", "align"},
+    {"principal_curvature_estimate", "curvature_estimate"}, {"boundary_alignment", "boundary"},
+    {"compute_eigenvalue_bound", "eigenvalue_bound"}};
+  for(const auto& name : names)
+    for(std::size_t at = message.find(name.first); at != std::string::npos;
+        at = message.find(name.first, at + std::strlen(name.second)))
+      message.replace(at, std::strlen(name.first), name.second);
+  return message;
+}
+
+// A component's eigen-solve stopped at max_iterations above its tolerance:
+// a RuntimeWarning (an exception where warnings are errors).
+void warn_not_converged(const SMDF::Direction_field_result& report)
+{
+  const std::string text = "the eigen-solve did not converge in " + std::to_string(report.iterations) +
+                           " iterations (relative residual " + compact(report.residual) +
+                           "); raise max_iterations or tolerance";
+  if(PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 // The module's object: its own copy of the mesh (with the maps of the
 // options) and, once compute() is called, the C++ class over it.
 class Direction_field_object
@@ -88,9 +117,11 @@ public:
   Result compute(const py::kwargs& kwargs, bool as_free_function = false)
   {
     const Options o = read_options(kwargs, m_mesh);
+    Python_progress progress(o.progress);
     std::vector<std::pair<Face_index, int> > singular;
     SMDF::Direction_field_result report;
     Field_values values;
+    try
     {
       // the computation runs without the GIL: other Python threads go on (one object, one call at a time)
       py::gil_scoped_release release;
@@ -99,17 +130,27 @@ public:
       if(as_free_function)
         report = compute_field([&](const auto& np) {
           return SMDF::compute_globally_optimal_directions(m_mesh, m_maps.direction, np);
-        }, o, m_maps, std::back_inserter(singular));
+        }, o, m_maps, std::back_inserter(singular), progress);
       else
       {
         if(!m_field) m_field = std::make_unique<Field>(m_mesh);
         report = compute_field([&](const auto& np) { return m_field->compute(m_maps.direction, np); }, o, m_maps,
-                               std::back_inserter(singular));
+                               std::back_inserter(singular), progress);
       }
       values = copy_field(m_mesh, m_maps);  // still under the lock: the maps are this call's
     }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      throw SMDF::Invalid_input_error(in_python_names(e.what()));
+    }
+    catch(const SMDF::Computation_interrupted&)
+    {
+      progress.raise_if_stopped();  // KeyboardInterrupt, or what the progress callable raised
+      throw;
+    }
     values.singular = std::move(singular);
     values.report = std::move(report);
+    if(!values.report.converged) warn_not_converged(values.report);
     return make_result(std::move(values));
   }
 
@@ -126,6 +167,8 @@ public:
   static void operator delete(void* p) { ::operator delete(p); }
 
   bool constructed() const { return m_signature == constructed_signature; }
+  std::size_t vertices() const { return m_mesh.number_of_vertices(); }
+  std::size_t faces() const { return m_mesh.number_of_faces(); }
 
   double construction_ms()
   {
@@ -182,14 +225,19 @@ void bind_result(py::module_& m)
       for(const auto& c : r.report.components) chi.push_back(c.euler_characteristic);
       return chi;
     })
-    .def_property_readonly("timings", [](const Result& r) { return timings_of(r.report); }, "milliseconds");
+    .def_property_readonly("timings", [](const Result& r) { return timings_of(r.report); }, "milliseconds")
+    .def("__repr__", [](const Result& r) {
+      return "<Result degree=" + std::to_string(r.report.degree) + ", " + std::to_string(r.directions.shape(0)) +
+             " vertices, " + std::to_string(r.singular_faces.shape(0)) + " singular faces, index_sum=" +
+             std::to_string(r.report.index_sum) + (r.report.converged ? "" : ", not converged") + ">";
+    });
 }
 
 const char* const compute_doc =
   "Computes the globally optimal n-direction field of the mesh.\n\n"
   "Keyword arguments (the named parameters of the C++ function):\n"
   "  degree=4            n: 1 vector, 2 line, 4 cross field ...\n"
-  "  s=0.0               smoothness parameter in [-1, 1] (-1 intrinsic, +1 extrinsic)\n"
+  "  s=0.0               the energy, in [-1, 1]: -1 anti-holomorphic, 0 Dirichlet, +1 holomorphic\n"
   "  align=None          'curvature' (= 'max-curvature'), 'min-curvature' or None (even n)\n"
   "  curvature_estimate  'quadric-fit' (default) or 'hopf'\n"
   "  guidance=None       (|V|, 3) vectors to follow (length = weight)\n"
@@ -201,7 +249,10 @@ const char* const compute_doc =
   "  prescribed=None     (k, 2) face, k: place the singularities (index k / n)\n"
   "  prescribed_loop_turns=None   (m, 2) loop, turns: with prescribed, the field's turns along the mesh's loops\n"
   "                      (Result.loop_turns gives a field's own)\n"
+  "  intrinsic_mollification=1e-6   relative margin of the fix for degenerate triangles (0: off)\n"
   "  max_iterations=1000, tolerance=1e-10, seed=0   the eigen-solve\n"
+  "  progress=None       a callable(fraction) told the fraction done (0 to 1) at each step and solve;\n"
+  "                      an exception it raises (or Ctrl-C) stops the computation and is raised\n"
   "Raises ValueError (InvalidInputError) for bad input, RuntimeError (SolverFailureError) if a solve fails.";
 
 // A path as Python gives it (str or os.PathLike), refused if it holds a NUL.
@@ -268,7 +319,13 @@ void bind_field(py::module_& m)
     .def("compute", [](Direction_field_object* f, const py::kwargs& kw) { return initialized(f).compute(kw); },
          compute_doc)
     .def_property_readonly("construction_ms", [](Direction_field_object* f) { return initialized(f).construction_ms(); },
-                           "milliseconds of the C++ class's mesh work (indexing, geometry, components; 0 before the first compute())");
+                           "milliseconds of the C++ class's mesh work (indexing, geometry, components; 0 before the first compute())")
+    .def("__repr__", [](Direction_field_object* f) {
+      return f != nullptr && f->constructed() ? "<DirectionField " + std::to_string(f->vertices()) + " vertices, " +
+                                                  std::to_string(f->faces()) + " faces>"
+                                              : std::string("<DirectionField, __init__ not called>");
+    });
+  m.attr("_compute_doc") = compute_doc;  // the package's wrappers (__init__.py) show it with their signature
   m.def("compute_globally_optimal_directions",
         [](const py::object& V, const py::object& F, const py::kwargs& kwargs) {
           Direction_field_object field(V, F);

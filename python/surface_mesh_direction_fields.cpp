@@ -11,6 +11,7 @@ PYBIND11_MODULE(_core, m)
   m.attr("__version__") = SMDF_VERSION;
   py::register_exception<SMDF::Invalid_input_error>(m, "InvalidInputError", PyExc_ValueError);
   py::register_exception<SMDF::Solver_failure_error>(m, "SolverFailureError", PyExc_RuntimeError);
+  py::register_exception<SMDF::Computation_interrupted>(m, "ComputationInterrupted", PyExc_RuntimeError);
   bind_result(m);
   bind_field(m);
   bind_files(m);

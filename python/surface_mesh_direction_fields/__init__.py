@@ -3,9 +3,48 @@ triangle meshes, after Knoeppel, Crane, Pinkall and Schroeder (2013), from
 CGAL's Surface_mesh_direction_fields package.
 
 The functions and classes are those of the compiled extension ``_core``; the
-type stubs (``__init__.pyi``, ``py.typed``) describe them for mypy and editors.
+field's two entry points are wrapped here so that their keyword arguments,
+with their defaults, are visible to ``inspect.signature`` and ``help()`` (the
+type stubs, ``__init__.pyi`` with ``py.typed``, describe them for mypy and
+editors).
 """
-from ._core import *  # noqa: F401,F403
-from ._core import __doc__ as _core_doc, __version__  # noqa: F401
+import inspect
+from typing import Any, Callable, Optional
 
-__doc__ = _core_doc
+from . import _core
+from ._core import *  # noqa: F401,F403
+from ._core import __version__  # noqa: F401
+
+
+def _keywords(*, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
+              curvature_estimate: str = "quadric-fit", guidance: Any = None, lambda_t: Optional[float] = None,
+              alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False, constraints: Any = None,
+              boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
+              prescribed: Any = None, prescribed_loop_turns: Any = None, intrinsic_mollification: float = 1e-6,
+              max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
+              progress: Optional[Callable[[float], None]] = None) -> None:
+    """The keyword arguments of a computation, with the defaults the C++ side applies."""
+
+
+def _signature(*positional: str) -> inspect.Signature:
+    leading = [inspect.Parameter(name, inspect.Parameter.POSITIONAL_ONLY) for name in positional]
+    return inspect.Signature(leading + list(inspect.signature(_keywords).parameters.values()),
+                             return_annotation="Result")
+
+
+def compute_globally_optimal_directions(V: Any, F: Any, /, **options: Any) -> "Result":
+    return _core.compute_globally_optimal_directions(V, F, **options)
+
+
+class DirectionField(_core.DirectionField):
+    __doc__ = _core.DirectionField.__doc__
+
+    def compute(self, /, **options: Any) -> "Result":
+        return super().compute(**options)
+
+
+compute_globally_optimal_directions.__doc__ = _core._compute_doc
+compute_globally_optimal_directions.__signature__ = _signature("V", "F")  # type: ignore[attr-defined]
+DirectionField.compute.__doc__ = _core._compute_doc
+DirectionField.compute.__signature__ = _signature("self")  # type: ignore[attr-defined]
+__doc__ = _core.__doc__

@@ -1,6 +1,6 @@
 """Globally optimal smooth n-direction fields on triangle meshes (CGAL Surface_mesh_direction_fields)."""
 import os
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -11,6 +11,7 @@ Path = Union[str, "os.PathLike[str]"]
 
 class InvalidInputError(ValueError): ...
 class SolverFailureError(RuntimeError): ...
+class ComputationInterrupted(RuntimeError): ...
 
 class Result:
     directions: npt.NDArray[np.float64]      # (|V|, 3) unit tangent directions
@@ -38,18 +39,26 @@ class Result:
     def timings(self) -> Dict[str, float]: ...
 
 def compute_globally_optimal_directions(
-    V: npt.ArrayLike, F: npt.ArrayLike, *, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
+    V: npt.ArrayLike, F: npt.ArrayLike, /, *, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
     curvature_estimate: str = "quadric-fit", guidance: Optional[npt.ArrayLike] = None,
     lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False,
     constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
     feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
     prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
-    max_iterations: int = 1000, tolerance: float = 1e-10,
-    seed: int = 0) -> Result: ...
+    intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
+    seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
 
 class DirectionField:
     def __init__(self, V: npt.ArrayLike, F: npt.ArrayLike) -> None: ...
-    def compute(self, **options: Any) -> Result: ...
+    def compute(
+        self, /, *, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
+        curvature_estimate: str = "quadric-fit", guidance: Optional[npt.ArrayLike] = None,
+        lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False,
+        constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
+        feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
+        prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
+        intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
+        seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
     @property
     def construction_ms(self) -> float: ...
 

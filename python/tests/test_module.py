@@ -154,6 +154,123 @@ def test_openblas_thread_control_is_opt_in(shared):
     assert np.abs(controlled.directions - left_alone.directions).max() < 1e-8
 
 
+def stub_parameters(function, cls=None):
+    """The parameter names and defaults of a function of the stubs (__init__.pyi)."""
+    import ast
+    tree = ast.parse(open(os.path.join(os.path.dirname(smdf.__file__), "__init__.pyi")).read())
+    scope = tree.body if cls is None else next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == cls).body
+    f = next(n for n in scope if isinstance(n, ast.FunctionDef) and n.name == function)
+    names = [a.arg for a in f.args.posonlyargs + f.args.args + f.args.kwonlyargs]
+    defaults = {a.arg: ast.literal_eval(d) for a, d in zip(f.args.kwonlyargs, f.args.kw_defaults)}
+    return names, defaults
+
+
+def test_signatures_show_every_keyword_as_the_stubs_do():
+    import inspect
+    for function, stub in [(smdf.compute_globally_optimal_directions, stub_parameters("compute_globally_optimal_directions")),
+                           (smdf.DirectionField.compute, stub_parameters("compute", "DirectionField"))]:
+        parameters = inspect.signature(function).parameters
+        assert list(parameters) == stub[0]
+        assert {n: p.default for n, p in parameters.items() if p.default is not p.empty} == stub[1]
+        assert "anti-holomorphic" in function.__doc__ and "intrinsic_mollification" in function.__doc__
+
+
+def test_defaults_given_explicitly_change_nothing():
+    import inspect
+    V, F = sphere()
+    defaults = {n: p.default for n, p in inspect.signature(smdf.compute_globally_optimal_directions).parameters.items()
+                if p.default is not p.empty}
+    implicit, explicit = (smdf.compute_globally_optimal_directions(V, F, **kw) for kw in ({}, defaults))
+    assert np.array_equal(implicit.directions, explicit.directions)
+    assert np.array_equal(smdf.DirectionField(V, F).compute(**defaults).directions, implicit.directions)
+
+
+def test_calls_fail_in_a_python_way():
+    V, F = sphere()
+    with pytest.raises(TypeError, match=r"takes 2 positional arguments but 3 were given"):
+        smdf.compute_globally_optimal_directions(V, F, 4)
+    with pytest.raises(TypeError, match=r"takes 1 positional argument but 2 were given"):
+        smdf.DirectionField(V, F).compute(4)
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'degre'"):
+        smdf.compute_globally_optimal_directions(V, F, degre=4)
+    # the library's messages name the Python keywords
+    with pytest.raises(ValueError, match=r"^lambda_t must be a finite number"):
+        smdf.compute_globally_optimal_directions(V, F, align="curvature", lambda_t=float("inf"))
+    with pytest.raises(ValueError, match=r"^the intrinsic mollification must be a non-negative number"):
+        smdf.compute_globally_optimal_directions(V, F, intrinsic_mollification=-1.0)
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    assert repr(r) == f"<Result degree=4, {len(V)} vertices, {len(r.singular_faces)} singular faces, index_sum=8>"
+    assert repr(smdf.DirectionField(V, F)) == f"<DirectionField {len(V)} vertices, {len(F)} faces>"
+
+
+def test_a_field_that_did_not_converge_warns():
+    V, F = sphere()
+    with pytest.warns(RuntimeWarning, match=r"did not converge in 1 iterations"):
+        r = smdf.compute_globally_optimal_directions(V, F, degree=4, max_iterations=1)
+    assert not r.converged and repr(r).endswith(", not converged>")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        smdf.compute_globally_optimal_directions(V, F, degree=4)  # converged: no warning
+
+
+def test_intrinsic_mollification_keyword():
+    # an octahedron whose top vertex moved onto the edge of its first face: that face has zero area,
+    # mollified by default, refused with 0
+    V, F = octahedron()
+    V[4] = (V[0] + V[2]) / 2
+    r = smdf.compute_globally_optimal_directions(V, F, degree=1)
+    assert r.index_sum == 2
+    with pytest.raises(ValueError, match=r"zero"):
+        smdf.compute_globally_optimal_directions(V, F, degree=1, intrinsic_mollification=0.0)
+
+
+def test_progress_and_stopping():
+    V, F = sphere(4)
+    fractions = []
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4, progress=fractions.append)
+    assert fractions[0] == 0.0 and fractions[-1] == 1.0 and fractions == sorted(fractions)
+    assert len(fractions) >= r.iterations + 4  # every step and every solve
+
+    class Stop(Exception):
+        pass
+
+    def stop_at_third(fraction, calls=[]):
+        calls.append(fraction)
+        if len(calls) == 3:
+            raise Stop()
+
+    field = smdf.DirectionField(V, F)
+    with pytest.raises(Stop):
+        field.compute(degree=6, s=0.5, progress=stop_at_third)
+    # the object stays usable: its next field is a fresh object's
+    again = field.compute(degree=6, s=0.5)
+    assert np.array_equal(again.directions, smdf.DirectionField(V, F).compute(degree=6, s=0.5).directions)
+    with pytest.raises(TypeError, match="progress must be a callable"):
+        field.compute(progress=3)
+
+
+def test_ctrl_c_interrupts_a_long_computation(shared):
+    """SIGINT 0.3 s into a computation of about a second: KeyboardInterrupt, raised by the
+    computation itself (not after it), and the module usable afterwards."""
+    import signal
+    path = os.path.join(shared, "nefertiti_sub4.off")
+    if not os.path.exists(path):
+        pytest.skip(MISSING_INPUT + "nefertiti_sub4.off")
+    V, F, _ = smdf.read_mesh(path)
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    seen = []
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            smdf.compute_globally_optimal_directions(V, F, degree=4, progress=seen.append)
+    finally:
+        timer.cancel()
+    assert 1.0 not in seen  # stopped before the end
+    r = smdf.compute_globally_optimal_directions(*sphere(), degree=4)
+    assert r.index_sum == 8
+
+
 def test_options_change_the_field():
     V, F = sphere()
     base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions

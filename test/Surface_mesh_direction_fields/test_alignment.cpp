@@ -25,6 +25,7 @@
 #include "umbilics.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <iterator>
@@ -485,6 +486,50 @@ static void check_class_after_a_refused_call(Test_report& report)
                "class: after a refused call, the smoothest field of a fresh class, bit for bit");
 }
 
+// progress_callback: fractions from 0 to 1, never decreasing, and a call per
+// solve of the eigen-solve; `false` stops the call with Computation_interrupted,
+// the output map untouched, and the class's next field is a fresh class's.
+static void check_interrupted_call(Test_report& report)
+{
+  Mesh mesh;
+  make_lumpy_sphere(mesh, 3);
+  auto d1 = direction_map(mesh, "v:interrupted_1");
+  auto d2 = direction_map(mesh, "v:interrupted_2");
+  std::vector<double> fractions;
+  SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
+  const SMDF::Direction_field_result full = field.compute(d1, params::degree(4).progress_callback([&](double f) {
+    fractions.push_back(f);
+    return true;
+  }));
+  report.check(!fractions.empty() && fractions.front() == 0. && fractions.back() == 1. &&
+                 std::is_sorted(fractions.begin(), fractions.end()) &&
+                 fractions.size() >= full.iterations + 4,
+               "progress_callback: " + std::to_string(fractions.size()) + " calls from 0 to 1, one per solve of the " +
+                 std::to_string(full.iterations) + " and per step");
+  for(Vertex_index v : mesh.vertices()) put(d2, v, Vector_3(7., 7., 7.));
+  int calls = 0;
+  bool interrupted = false;
+  try
+  {
+    field.compute(d2, params::degree(6).smoothness_parameter(0.5).progress_callback([&](double) { return ++calls < 6; }));
+  }
+  catch(const SMDF::Computation_interrupted&)
+  {
+    interrupted = true;
+  }
+  bool untouched = true;
+  for(Vertex_index v : mesh.vertices()) untouched = untouched && d2[v] == Vector_3(7., 7., 7.);
+  field.compute(d2, params::degree(6).smoothness_parameter(0.5));
+  SMDF::Globally_optimal_direction_field<Mesh> fresh(mesh);
+  auto d3 = direction_map(mesh, "v:interrupted_3");
+  fresh.compute(d3, params::degree(6).smoothness_parameter(0.5));
+  bool same = true;
+  for(Vertex_index v : mesh.vertices()) same = same && d2[v] == d3[v];
+  report.check(interrupted && calls == 6 && untouched,
+               "progress_callback returning false: Computation_interrupted at once, the output map untouched");
+  report.check(same, "class: after an interrupted call, the field of a fresh class, bit for bit");
+}
+
 int main()
 {
   Test_report report("alignment");
@@ -496,5 +541,6 @@ int main()
   check_constraints(report);
   check_errors(report);
   check_class_after_a_refused_call(report);
+  check_interrupted_call(report);
   return report.finish();
 }

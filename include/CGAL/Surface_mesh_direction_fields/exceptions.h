@@ -102,6 +102,22 @@ public:
   explicit Solver_failure_error(const std::string& what) : Direction_field_error(what) {}
 };
 
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+Thrown when the `progress_callback` named parameter returned `false`: the
+computation stopped there. The output maps are left unchanged, and the class
+`Globally_optimal_direction_field` computes the next field as a new object
+would.
+*/
+class Computation_interrupted : public Direction_field_error
+{
+public:
+  /// constructs the exception.
+  /// \param what the message
+  explicit Computation_interrupted(const std::string& what) : Direction_field_error(what) {}
+};
+
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 

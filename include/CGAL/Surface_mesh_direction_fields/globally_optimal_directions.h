@@ -249,6 +249,13 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{`0`}
   \cgalParamNEnd
+  \cgalParamNBegin{progress_callback}
+    \cgalParamDescription{called on the calling thread with the fraction done (0 to 1) at each step and before
+                          each solve of the iteration; returning `false` stops the computation with
+                          `Computation_interrupted`, the output maps unchanged (a way to honour Ctrl-C)}
+    \cgalParamType{a callable `bool(double)`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
   \cgalParamNBegin{sparse_linear_solver}
     \cgalParamDescription{the solver that factors the shifted energy matrix \f$ A - \sigma M \f$ once per
                           component and solves with it at each iteration (\f$ \sigma \f$ just below

@@ -46,3 +46,4 @@ CGAL_add_named_parameter(edge_is_feature_t, edge_is_feature, edge_is_feature_map
 CGAL_add_named_parameter(distributed_solver_t, distributed_solver, distributed_solver)
 CGAL_add_named_parameter(prescribed_singularities_t, prescribed_singularities, prescribed_singularities)
 CGAL_add_named_parameter(prescribed_loop_turns_t, prescribed_loop_turns, prescribed_loop_turns)
+CGAL_add_named_parameter(progress_callback_t, progress_callback, progress_callback)

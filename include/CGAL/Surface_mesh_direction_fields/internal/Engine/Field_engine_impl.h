@@ -25,6 +25,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/field_targets.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/prescribed_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 // the method's last steps: guidance, indices, directions in 3D
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/extrinsic_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_inputs.h>
@@ -70,6 +71,8 @@ public:
     if(request.prescribed) return compute_prescribed(request, given_solver, std::move(result), start, answer);
     typename Component_systems<SparseSolver>::Call_scope call(m_systems, {given_solver, request.distributed});
     SparseSolver linear_solver = given_solver != nullptr ? *given_solver : SparseSolver();
+    Progress_report progress(request.progress);
+    progress.reached(0.);
 
     // 1. the hard constraints and the alignment request (manual, "Aligned and Constrained Fields")
     Field_targets targets = field_targets(m_geometry, request);
@@ -79,18 +82,25 @@ public:
     m_systems.update_matrices(result.degree, result.smoothness_parameter,
                               m_systems.shift_only(early, targets.alignment.lambda));
     result.timings.setup_ms = milliseconds_since(start);
+    progress.reached(0.1);
 
     // 3. the guidance q, computed while the factorizations that do not depend on it run
     read_guidance(request, early, linear_solver, targets, result.timings);
+    progress.reached(0.2);
 
     // 4. one problem per component: the smallest eigenvector, or the aligned / constrained solve
-    const Eigen_solve_options options = eigen_solve_options(request);
+    Eigen_solve_options options = eigen_solve_options(request);
+    options.keep_going = progress.keep_going_test();
     Component_fields<SparseSolver> fields(m_geometry, m_systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_geometry.mesh.number_of_vertices(), Complex(0., 0.));
     answer.magnitudes.assign(u.size(), 0.);
     result.components.resize(m_geometry.components.list.size());
     for(std::size_t c = 0; c < result.components.size(); ++c)
+    {
+      progress.reached(0.2 + 0.8 * static_cast<double>(c) / static_cast<double>(result.components.size()));
       solve_component(c, fields, targets, options, result, u, answer.magnitudes);
+    }
+    progress.reached(1.);
 
     // 5. the outputs: singular faces with their indices, unit directions in 3D
     report_indices(face_indices(m_geometry.mesh, m_systems.connection(), u), result, answer);
@@ -169,6 +179,8 @@ private:
                                             Direction_field_result result, Clock::time_point start,
                                             Field_answer& answer)
   {
+    Progress_report progress(request.progress);
+    progress.reached(0.);
     Field_targets targets = field_targets(m_geometry, request);
     Prescribed_fields::refuse_other_requests(request);
     const Connection& connection = m_systems.update_connection(result.degree);
@@ -190,6 +202,7 @@ private:
     write_directions(u, result.degree, targets.constraints, result, answer);
     answer.magnitudes.resize(u.size());
     for(std::size_t v = 0; v < u.size(); ++v) answer.magnitudes[v] = std::abs(u[v]);  // 1, 0 at isolated vertices
+    progress.reached(1.);
     finish_timings(start, result.timings);
     return result;
   }

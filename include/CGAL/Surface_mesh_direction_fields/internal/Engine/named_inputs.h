@@ -123,6 +123,8 @@ void read_field_parameters(const NamedParameters& np, Field_request& r)
   r.random_seed = checked_count(choose_parameter(get_parameter(np, internal_np::random_seed), 0u), "random_seed");
   if(!(r.residual_tolerance >= 0.))
     throw Invalid_input_error("the residual tolerance must be non-negative");
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::progress_callback_t>::value)
+    r.progress = get_parameter(np, internal_np::progress_callback);
 }
 
 // The guidance: principal curvatures and/or vertex_guidance_map.

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -73,6 +74,8 @@ struct Eigen_solve_options
   double residual_tolerance = 1e-10;
   std::size_t max_iterations = 1000;
   unsigned int random_seed = 0;
+  // asked before each solve; false stops the iteration (Computation_interrupted)
+  std::function<bool()> keep_going;
   // Vectors per block solve; the largest basis kept for Rayleigh-Ritz (its
   // memory is basis_size complex vectors); how many of its best Ritz vectors
   // a restart keeps. Keeping several matters where the lowest eigenvalues
@@ -455,6 +458,8 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   std::vector<double> best_residual(1, result.residual);  // after each solve
   while(result.iterations < options.max_iterations)
   {
+    if(options.keep_going && !options.keep_going())
+      throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
     const Complex_dense_matrix W = factored.solve(R);
     ++result.iterations;
     if(basis.size() + W.cols() > basis_size)

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,9 @@ struct Field_request
   std::vector<std::pair<std::size_t, long> > loop_turns;  // (loop, turns) as given
 
   const Distributed_backend* distributed = nullptr;  // the backend of `distributed_solver`, if any
+
+  // `progress_callback`: told the fraction done; false stops the computation
+  std::function<bool(double)> progress;
 };
 
 // The field of one compute(), by vertex and face index.

@@ -1,0 +1,59 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_PROGRESS_REPORT_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_PROGRESS_REPORT_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+
+#include <functional>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// The user's progress_callback of one compute(): told the fraction done at
+// each step and before each solve of the eigen-solve (through
+// Eigen_solve_options::keep_going); `false` stops the computation with
+// Computation_interrupted, which the engine's Call_scope turns into a clean
+// state for the next call.
+class Progress_report
+{
+public:
+  explicit Progress_report(const std::function<bool(double)>& callback) : m_callback(callback) {}
+
+  bool keep_going() const { return !m_callback || m_callback(m_fraction); }
+
+  void reached(double fraction)
+  {
+    m_fraction = fraction;
+    if(!keep_going()) throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
+  }
+
+  // what the eigen-solve asks before each solve
+  std::function<bool()> keep_going_test() const
+  {
+    if(!m_callback) return {};
+    return [this] { return keep_going(); };
+  }
+
+private:
+  const std::function<bool(double)>& m_callback;
+  double m_fraction = 0.;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_PROGRESS_REPORT_H
