@@ -85,6 +85,34 @@ void crosses_only(const SMDF::Direction_field_data& d, const char* format)
                                     std::to_string(d.degree));
 }
 
+// A (rows, 3) array of vectors.
+template <typename Vectors>
+py::array_t<double> vector_rows(const Vectors& vectors)
+{
+  py::array_t<double> a({static_cast<py::ssize_t>(vectors.size()), py::ssize_t(3)});
+  auto r = a.mutable_unchecked<2>();
+  for(py::ssize_t i = 0; i < r.shape(0); ++i)
+    for(int c = 0; c < 3; ++c) r(i, c) = vectors[static_cast<std::size_t>(i)][c];
+  return a;
+}
+
+py::dict field_arrays(const py::object& V, const py::object& F, const Result& result)
+{
+  const SMDF::Direction_field_data data = field_data(V, F, result);
+  const py::ssize_t n = data.degree;
+  py::array_t<double> all({static_cast<py::ssize_t>(data.directions.size()), n, py::ssize_t(3)});
+  auto a = all.mutable_unchecked<3>();
+  for(py::ssize_t v = 0; v < a.shape(0); ++v)
+    for(py::ssize_t k = 0; k < n; ++k)
+      for(int c = 0; c < 3; ++c)
+        a(v, k, c) = data.directions[static_cast<std::size_t>(v)][static_cast<std::size_t>(k)][c];
+  py::dict arrays;
+  arrays["normals"] = vector_rows(data.normals);
+  arrays["directions"] = all;
+  arrays["face_directions"] = vector_rows(SMDF::face_directions(data));
+  return arrays;
+}
+
 void bind_files(py::module_& m)
 {
   py::register_exception<File_error>(m, "FileError", PyExc_OSError);
@@ -127,6 +155,10 @@ void bind_files(py::module_& m)
           "(write_vtk_singularities to a .vtu for a field without singularities: meshio reads no .vtu without "
           "points; an older file of that name is removed). Raises OSError if the file cannot be written.");
   }
+  m.def("field_arrays", &field_arrays, py::arg("V"), py::arg("F"), py::arg("result"),
+        "The field of `result` (computed on V, F) as the files store it: a dict of 'normals' (|V|, 3), "
+        "'directions' (|V|, n, 3): all n directions, the k-th the first turned by 2 pi k / n about the normal, "
+        "and 'face_directions' (|F|, 3): one direction per face, as write_rosy writes them.");
 }
 
 }  // namespace

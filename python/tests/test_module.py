@@ -271,6 +271,20 @@ def test_ctrl_c_interrupts_a_long_computation(shared):
     assert r.index_sum == 8
 
 
+def test_field_arrays_all_directions_and_normals():
+    V, F = sphere()
+    for n in (1, 4, 6):
+        r = smdf.compute_globally_optimal_directions(V, F, degree=n)
+        a = smdf.field_arrays(V, F, r)
+        N, D = a["normals"], a["directions"]
+        assert N.shape == (len(V), 3) and D.shape == (len(V), n, 3) and a["face_directions"].shape == (len(F), 3)
+        assert np.array_equal(D[:, 0], r.directions)
+        assert np.allclose(np.linalg.norm(N, axis=1), 1.0) and np.abs(np.einsum("ij,ikj->ik", N, D)).max() < 1e-12
+        for k in range(n):  # the k-th: the first turned by 2 pi k / n about the normal
+            turned = np.cos(2 * np.pi * k / n) * D[:, 0] + np.sin(2 * np.pi * k / n) * np.cross(N, D[:, 0])
+            assert np.abs(D[:, k] - turned).max() < 1e-12
+
+
 def test_options_change_the_field():
     V, F = sphere()
     base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions
