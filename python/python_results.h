@@ -266,7 +266,30 @@ std::string path_argument(const py::object& path)
   return p;
 }
 
-py::tuple read_mesh(const py::object& path_object)
+// An index map as an int64 array (-1 where there is no index).
+template <typename Index>
+py::array_t<long long> index_array(const std::vector<Index>& map, Index none)
+{
+  py::array_t<long long> a(static_cast<py::ssize_t>(map.size()));
+  auto r = a.mutable_unchecked<1>();
+  for(py::ssize_t i = 0; i < r.shape(0); ++i)
+  {
+    const Index x = map[static_cast<std::size_t>(i)];
+    r(i) = x == none ? -1 : static_cast<long long>(static_cast<std::size_t>(x));
+  }
+  return a;
+}
+
+py::dict file_maps(const Repaired_mesh<Mesh>& in)
+{
+  py::dict maps;
+  maps["vertex_of_file_vertex"] = index_array(in.vertex_of_file_vertex, Mesh::null_vertex());
+  maps["file_vertex_of_vertex"] = index_array(in.file_vertex_of_vertex, static_cast<std::size_t>(-1));
+  maps["file_face_of_face"] = index_array(in.file_face_of_face, static_cast<std::size_t>(-1));
+  return maps;
+}
+
+py::tuple read_mesh(const py::object& path_object, bool with_maps)
 {
   const std::string path = path_argument(path_object);
   Repaired_mesh<Mesh> in;
@@ -297,6 +320,7 @@ py::tuple read_mesh(const py::object& path_object)
   repairs["vertices_duplicated"] = r.duplicated_vertices;
   repairs["faces_skipped"] = r.skipped_triangles;
   repairs["unused_vertices_removed"] = r.unused_vertices;
+  if(with_maps) return py::make_tuple(V, F, repairs, file_maps(in));
   return py::make_tuple(V, F, repairs);
 }
 
@@ -332,9 +356,12 @@ void bind_field(py::module_& m)
           return field.compute(kwargs, true);
         },
         py::arg("V"), py::arg("F"), compute_doc);
-  m.def("read_mesh", &read_mesh, py::arg("path"),
+  m.def("read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("with_maps") = false,
         "Reads an OFF, OBJ, PLY or STL file with the command-line program's readers and repair; returns\n"
-        "(V, F, repairs): float64 (|V|, 3), int64 (|F|, 3), and a dict of what the repair changed.");
+        "(V, F, repairs): float64 (|V|, 3), int64 (|F|, 3), and a dict of what the repair changed; with\n"
+        "with_maps=True also a dict of int64 arrays between the file and the mesh: 'vertex_of_file_vertex'\n"
+        "(-1: a point no face uses; merged points share a vertex), 'file_vertex_of_vertex' and\n"
+        "'file_face_of_face' (the polygon of the file each triangle comes from).");
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 # Python (with its site packages: numpy, pytest; --no-index: nothing
 # downloaded), building the extension in the test build's CMake folder. Then
 # pip knows it (list, version metadata), mypy sees its types (the typed
-# example passes --strict, a wrong call is flagged), the module's tests pass
+# example passes --strict, a wrong keyword type is flagged), the module's tests pass
 # against the installed package, pip uninstall removes it; and the README's
 # CMake route (cmake --install --component python) gives an importable package.
 #   usage: test_pip_install.sh SOURCE_DIR BUILD_DIR WORK_DIR PROGRAM SHARED_MESH_DIR
@@ -40,9 +40,10 @@ echo "installed: $("$py" -m pip show surface-mesh-direction-fields | grep -E '^(
 
 mypy --python-executable "$py" --strict "$source/examples/Surface_mesh_direction_fields/python/cross_field.py" \
   || fail "mypy --strict on the typed example"
-printf 'import surface_mesh_direction_fields as smdf\nsmdf.read_mesh(3)\n' > wrong_call.py
-if mypy --python-executable "$py" wrong_call.py > mypy_wrong.txt; then fail "mypy accepted read_mesh(3)"; fi
-grep -q 'Argument 1 to "read_mesh" has incompatible type "int"' mypy_wrong.txt || { cat mypy_wrong.txt; fail "mypy's message"; }
+printf 'import surface_mesh_direction_fields as smdf\nsmdf.compute_globally_optimal_directions([], [], degree="4")\n' > wrong_call.py
+if mypy --python-executable "$py" wrong_call.py > mypy_wrong.txt; then fail "mypy accepted degree=\"4\""; fi
+grep -q 'Argument "degree" to "compute_globally_optimal_directions" has incompatible type "str"' mypy_wrong.txt \
+  || { cat mypy_wrong.txt; fail "mypy's message"; }
 
 "$py" -m pytest -q -p no:cacheprovider "$source/python/tests" --direction-field "$program" --shared "$shared" \
   --installed-in "$work/venv" || exit $?

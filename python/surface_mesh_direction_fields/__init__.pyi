@@ -1,6 +1,6 @@
 """Globally optimal smooth n-direction fields on triangle meshes (CGAL Surface_mesh_direction_fields)."""
 import os
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -62,7 +62,11 @@ class DirectionField:
     @property
     def construction_ms(self) -> float: ...
 
-def read_mesh(path: Path) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int]]: ...
+@overload
+def read_mesh(path: Path, *, with_maps: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int]]: ...
+@overload
+def read_mesh(path: Path, *, with_maps: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int],
+                                                              Dict[str, npt.NDArray[np.int64]]]: ...
 
 class FileError(OSError): ...
 

@@ -285,6 +285,24 @@ def test_field_arrays_all_directions_and_normals():
             assert np.abs(D[:, k] - turned).max() < 1e-12
 
 
+def test_read_mesh_maps_between_file_and_mesh(tmp_path):
+    # a quad (triangulated), a point given twice (merged), a point no face uses
+    off = tmp_path / "m.off"
+    off.write_text("OFF\n7 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n9 9 9\n0.5 0.5 1\n1 0 0\n"
+                   "4 3 2 1 0\n3 0 1 5\n3 6 2 5\n3 2 3 5\n3 3 0 5\n")
+    V, F, repairs, maps = smdf.read_mesh(off, with_maps=True)
+    assert repairs["merged_points"] == 1 and repairs["polygons_triangulated"] == 1
+    file_points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [9, 9, 9], [0.5, 0.5, 1], [1, 0, 0]])
+    of_file = maps["vertex_of_file_vertex"]
+    assert len(of_file) == 7 and of_file[4] == -1 and of_file[1] == of_file[6]
+    used = of_file >= 0
+    assert np.array_equal(V[of_file[used]], file_points[used])
+    assert np.array_equal(file_points[maps["file_vertex_of_vertex"]], V)
+    assert len(maps["file_face_of_face"]) == len(F) == 6 and sorted(set(maps["file_face_of_face"])) == [0, 1, 2, 3, 4]
+    assert list(maps["file_face_of_face"]).count(0) == 2  # the quad's two triangles
+    assert len(smdf.read_mesh(off)) == 3
+
+
 def test_options_change_the_field():
     V, F = sphere()
     base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions
