@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -43,6 +44,14 @@ namespace {
 
 [[noreturn]] void refuse(const std::string& message) { throw py::value_error(message); }
 
+// +1 if the triangle runs along `edge` from its first vertex to its second, -1 otherwise.
+inline int direction_in(const long long* t, const std::pair<long long, long long>& edge)
+{
+  for(int c = 0; c < 3; ++c)
+    if(t[c] == edge.first && t[(c + 1) % 3] == edge.second) return 1;
+  return -1;
+}
+
 // The rows of a C-contiguous (n, 3) numpy array, as build_oriented_manifold()
 // reads them: the mesh is built from the arrays without another copy.
 template <typename T>
@@ -53,6 +62,32 @@ struct Rows_of_three
   std::size_t size() const { return rows; }
   const T* operator[](std::size_t i) const { return data + 3 * i; }
 };
+
+// Why triangles that build_oriented_manifold() refused are not an oriented
+// manifold, naming the faces where it can: two faces using one edge in the
+// same direction (one of them is flipped), or an edge of more than two faces.
+inline std::string why_not_an_oriented_manifold(const Rows_of_three<long long>& triangles)
+{
+  std::map<std::pair<long long, long long>, std::vector<std::size_t> > faces_of_edge;  // undirected edge
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const long long a = triangles[f][c], b = triangles[f][(c + 1) % 3];
+      faces_of_edge[std::minmax(a, b)].push_back(f);
+    }
+  for(const auto& [edge, faces] : faces_of_edge)
+  {
+    if(faces.size() > 2)
+      return "the edge " + std::to_string(edge.first) + "-" + std::to_string(edge.second) + " belongs to " +
+             std::to_string(faces.size()) + " faces (F rows " + std::to_string(faces[0]) + ", " +
+             std::to_string(faces[1]) + ", " + std::to_string(faces[2]) + (faces.size() > 3 ? ", ..." : "") + ")";
+    if(faces.size() == 2 && direction_in(triangles[faces[0]], edge) == direction_in(triangles[faces[1]], edge))
+      return "F rows " + std::to_string(faces[0]) + " and " + std::to_string(faces[1]) + " run along the edge " +
+             std::to_string(edge.first) + "-" + std::to_string(edge.second) +
+             " in the same direction: one of them is flipped (or they repeat one face)";
+  }
+  return "the faces do not form an oriented manifold mesh (a pinched vertex: its faces form more than one fan)";
+}
 
 // V (|V| x 3, finite) and F (|F| x 3 indices into V) as a Surface_mesh, built
 // as the command-line program builds a clean file's mesh (the same halfedges,
@@ -81,9 +116,7 @@ Mesh make_mesh(const Float_array& V, const Index_array& F)
   bool built = false;
   try { built = rr::build_oriented_manifold(points, triangles, mesh); }
   catch(const Mesh_input_error& e) { refuse(e.what()); }
-  if(!built)
-    refuse("the faces do not form an oriented manifold mesh (a repeated face, an edge of more than two faces, "
-           "a pinched vertex or inconsistent orientation); read_mesh() repairs mesh files");
+  if(!built) refuse(why_not_an_oriented_manifold(triangles) + "; read_mesh() repairs mesh files");
   return mesh;
 }
 

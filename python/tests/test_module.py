@@ -303,6 +303,19 @@ def test_read_mesh_maps_between_file_and_mesh(tmp_path):
     assert len(smdf.read_mesh(off)) == 3
 
 
+def test_a_mesh_that_is_not_an_oriented_manifold_is_named():
+    V, F = octahedron()
+    flipped = F.copy()
+    flipped[5] = flipped[5][::-1]
+    with pytest.raises(ValueError, match=r"F rows [0-9]+ and 5 run along the edge [0-9]+-[0-9]+ in the same "
+                                         r"direction: one of them is flipped.*read_mesh\(\) repairs"):
+        smdf.compute_globally_optimal_directions(V, flipped)
+    V3 = np.vstack([V, [[0.5, 0.5, 0.5]]])
+    fin = np.vstack([F, [[0, 2, 6]]])  # a third face on the edge 0-2
+    with pytest.raises(ValueError, match=r"the edge 0-2 belongs to 3 faces \(F rows 0, 4, 8\)"):
+        smdf.DirectionField(V3, fin)
+
+
 def test_options_change_the_field():
     V, F = sphere()
     base = smdf.compute_globally_optimal_directions(V, F, degree=4).directions
