@@ -3,7 +3,7 @@
 # Python (with its site packages: numpy, pytest; --no-index: nothing
 # downloaded), building the extension in the test build's CMake folder. Then
 # pip knows it (list, version metadata), mypy sees its types (the typed
-# example passes --strict, a wrong keyword type is flagged), the module's tests pass
+# example passes --strict and runs, a wrong keyword type is flagged), the module's tests pass
 # against the installed package, pip uninstall removes it; and the README's
 # CMake route (cmake --install --component python) gives an importable package.
 #   usage: test_pip_install.sh SOURCE_DIR BUILD_DIR WORK_DIR PROGRAM SHARED_MESH_DIR
@@ -38,8 +38,12 @@ assert r.index_sum == 8, r.index_sum  # n chi on a tetrahedron
 PY
 echo "installed: $("$py" -m pip show surface-mesh-direction-fields | grep -E '^(Name|Version|Location)' | tr '\n' ' ')"
 
-mypy --python-executable "$py" --strict "$source/examples/Surface_mesh_direction_fields/python/cross_field.py" \
-  || fail "mypy --strict on the typed example"
+example="$source/examples/Surface_mesh_direction_fields/python/cross_field.py"
+mypy --python-executable "$py" --strict "$example" || fail "mypy --strict on the typed example"
+printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n' > octahedron.off
+ran=$("$py" "$example" octahedron.off octahedron.vtu) || fail "the typed example"
+grep -Eq "^8 faces \(0 repairs\), [0-9]+ singular faces: .*, index sum 8/4$" <<< "$ran" \
+  && [ -s octahedron.vtu ] || fail "the typed example's output: $ran"
 printf 'import surface_mesh_direction_fields as smdf\nsmdf.compute_globally_optimal_directions([], [], degree="4")\n' > wrong_call.py
 if mypy --python-executable "$py" wrong_call.py > mypy_wrong.txt; then fail "mypy accepted degree=\"4\""; fi
 grep -q 'Argument "degree" to "compute_globally_optimal_directions" has incompatible type "str"' mypy_wrong.txt \
