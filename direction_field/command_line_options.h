@@ -29,6 +29,8 @@ struct Options
   double s = 0.;
   std::string directions, singularities, png, json_file;
   std::string vtk, vtk_singularities, ply, rosy, ffield, singularity_list, streamlines, mesh_out;
+  std::string on = "vertices";  // --on: where the field lives (vertices, or faces with singular vertices)
+  std::string sharp, rawfield, sing, matching;
   bool json = false, quiet = false;
   unsigned int seed = 0;
   unsigned int max_iterations = 1000;
@@ -68,6 +70,10 @@ inline const Option_help option_help[] = {
   {"Field", "--degree N", "the number n of directions: 1 vector, 2 line, 4 cross field ... (1 to 1000; default 4)"},
   {"Field", "--s S", "the smoothness parameter in [-1, 1]: -1 follows the intrinsic, +1 the extrinsic "
                      "(shape) connection (default 0)"},
+  {"Field", "--on WHERE", "vertices (default): one direction per vertex, singularities in faces; or faces: one "
+                         "direction per face, singularities at vertices, a matching per edge (what quad meshers "
+                         "read; s must be 0; outputs --rosy, --ffield, --sharp, --rawfield, --sing, --matching, "
+                         "--singularities, --mesh-out, --json)"},
   {"Field", "--seed N", "the seed of the random start vector of the eigen-solve (default 0)"},
   {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
   {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
@@ -99,8 +105,15 @@ inline const Option_help option_help[] = {
   {"Outputs", "--vtk-singularities FILE", "the singularities as small markers coloured by index, to open beside "
                                           "--vtk's file (.vtk or .vtu)"},
   {"Outputs", "--ply FILE", "PLY with per-vertex direction and magnitude, per-face singularity"},
-  {"Outputs", "--rosy FILE", "the per-face cross field for QuadWild/vcglib (n = 4 only)"},
+  {"Outputs", "--rosy FILE", "the per-face cross field for QuadWild/vcglib (n = 4 only); with --on vertices a "
+                            "sampling of the vertex field, whose singular vertices can differ from the singular "
+                            "faces on scans: --on faces writes the field whose singularities QuadWild finds"},
   {"Outputs", "--ffield FILE", "the per-face cross field as a vcglib frame file (n = 4 only)"},
+  {"Outputs", "--sharp FILE", "QuadWild's feature file: the edges of --feature-angle and the boundary edges, "
+                             "'type,face,edge' per side (1 convex, 0 concave), numbered as in --mesh-out's mesh"},
+  {"Outputs", "--rawfield FILE", "with --on faces: Directional's raw field, the n directions of each face"},
+  {"Outputs", "--sing FILE", "with --on faces: Directional's singularities, 'vertex k' per singular vertex"},
+  {"Outputs", "--matching FILE", "with --on faces: Directional's matching file (the period jump of each edge)"},
   {"Outputs", "--singularity-list FILE", "one 'face k n x y z' per singular face"},
   {"Outputs", "--streamlines FILE", "field lines: .vtp (VTK polylines), .vtu or .vtk (VTK line segments, read by "
                                     "meshio too), .obj ('l' lines), or any other name: one 'N x1 y1 z1 ... xN yN "
@@ -129,6 +142,8 @@ inline const char* const usage =
   "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
   "                       [--singularity-list FILE]"
   " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
+  "                       [--on vertices|faces] [--sharp FILE] [--rawfield FILE] [--sing FILE]\n"
+  "                       [--matching FILE]\n"
   "                       [--solver default|petsc]"
   " [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
   "                       [--help] [--version]\n";
@@ -206,6 +221,10 @@ inline std::string* output_option(Options& o, const std::string& a)
   if(a == "--singularity-list") return &o.singularity_list;
   if(a == "--streamlines") return &o.streamlines;
   if(a == "--mesh-out") return &o.mesh_out;
+  if(a == "--sharp") return &o.sharp;
+  if(a == "--rawfield") return &o.rawfield;
+  if(a == "--sing") return &o.sing;
+  if(a == "--matching") return &o.matching;
   return nullptr;
 }
 
@@ -240,6 +259,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--curvature-estimate") o.curvature_estimate = v;
   else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
   else if(a == "--solver") o.solver = v;
+  else if(a == "--on") o.on = v;
   else if(a == "--petsc-options") o.petsc_options = v;
   else if(a == "--distribute-from") { o.distribute_from = parse_count(a, v); o.distribute_from_given = true; }
   else return false;
@@ -256,6 +276,30 @@ inline void check_prescription_options(const Options& o)
                       " does not apply to --prescribe (the alignment only chooses the field's rotation)");
   if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound does not apply to --prescribe");
   if(o.solver != "default") throw Usage_error("--prescribe runs on one process: no --solver " + o.solver);
+}
+
+// --on faces and the options of vertex fields; the files of face fields.
+inline void check_field_location_options(const Options& o)
+{
+  if(o.on != "vertices" && o.on != "faces") throw Usage_error("--on expects vertices or faces, got '" + o.on + "'");
+  if(o.on == "vertices")
+  {
+    const std::pair<const char*, const std::string*> face_files[] = {
+      {"--rawfield", &o.rawfield}, {"--sing", &o.sing}, {"--matching", &o.matching}};
+    for(const auto& f : face_files)
+      if(!f.second->empty())
+        throw Usage_error(std::string(f.first) + " writes a field on faces with its matching: add --on faces");
+    return;
+  }
+  const std::pair<const char*, const std::string*> vertex_outputs[] = {
+    {"--directions", &o.directions}, {"--png", &o.png}, {"--vtk", &o.vtk},
+    {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--singularity-list", &o.singularity_list},
+    {"--streamlines", &o.streamlines}, {"--guidance", &o.guidance}, {"--prescribe", &o.prescribe}};
+  for(const auto& f : vertex_outputs)
+    if(!f.second->empty()) throw Usage_error(std::string(f.first) + " applies to fields on vertices, not to --on faces");
+  if(o.s != 0.) throw Usage_error("--on faces has the Dirichlet energy only: --s must be 0");
+  if(o.solver != "default") throw Usage_error("--on faces runs on one process: no --solver " + o.solver);
+  if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound applies to fields on vertices");
 }
 
 // The values that are words, and the combinations of options.
@@ -286,6 +330,7 @@ inline void check_options(const Options& o)
     throw Usage_error(std::string(o.lambda_given ? "--lambda" : "--alignment-weight") +
                       " needs something to align to (--align or --guidance)");
   check_prescription_options(o);
+  check_field_location_options(o);
   if((!o.rosy.empty() || !o.ffield.empty()) && o.degree != 4)
     throw Usage_error(std::string(o.rosy.empty() ? "--ffield" : "--rosy") +
                       " describes cross fields (n = 4) only, as vcglib and QuadWild read them; n is " +

@@ -20,6 +20,7 @@
 
 #include "command_line_options.h"
 #include "exchange_files.h"
+#include "face_field_run.h"
 #include "file_io/optional_named_parameters.h"
 #include "file_io/output_files.h"
 #include "progress.h"
@@ -288,13 +289,6 @@ private:
 void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Processes& processes,
                    Computed_field& field)
 {
-  const SMDF::Principal_curvature_alignment curvature =
-    o.align == "none" ? SMDF::Principal_curvature_alignment::NONE
-    : o.align == "min-curvature" ? SMDF::Principal_curvature_alignment::MINIMUM
-                                 : SMDF::Principal_curvature_alignment::MAXIMUM;
-  const SMDF::Boundary_alignment boundary =
-    o.constrain_boundary == "tangent" ? SMDF::Boundary_alignment::TANGENT
-    : o.constrain_boundary == "normal" ? SMDF::Boundary_alignment::NORMAL : SMDF::Boundary_alignment::NONE;
   const std::vector<Vector_3> guidance = o.guidance.empty() ? std::vector<Vector_3>() : read_guidance(o, input);
   auto directions = CGAL::make_property_map(field.directions);
   auto base = CGAL::parameters::degree(o.degree)
@@ -302,8 +296,8 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
                 .random_seed(o.seed)
                 .number_of_iterations(o.max_iterations)
                 .residual_tolerance(o.tolerance)
-                .principal_curvature_alignment(curvature)
-                .boundary_alignment(boundary)
+                .principal_curvature_alignment(face_field_run::curvature_alignment(o))
+                .boundary_alignment(face_field_run::boundary_alignment(o))
                 .compute_eigenvalue_bound(o.eigenvalue_bound)
                 .principal_curvature_estimate(o.curvature_estimate == "hopf"
                                                 ? SMDF::Principal_curvature_estimate::HOPF_DIFFERENTIAL
@@ -411,7 +405,8 @@ void register_outputs(const Options& o, Output_files& outputs)
   const std::pair<const char*, const std::string*> paths[] = {
     {"--directions", &o.directions}, {"--singularities", &o.singularities}, {"--json-file", &o.json_file},
     {"--png", &o.png}, {"--vtk", &o.vtk}, {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--rosy", &o.rosy}, {"--ffield", &o.ffield},
-    {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out}};
+    {"--singularity-list", &o.singularity_list}, {"--streamlines", &o.streamlines}, {"--mesh-out", &o.mesh_out},
+    {"--sharp", &o.sharp}, {"--rawfield", &o.rawfield}, {"--sing", &o.sing}, {"--matching", &o.matching}};
   const Input_files inputs = {{"input mesh", o.mesh}, {"--guidance", o.guidance}, {"--prescribe", o.prescribe}};
   for(const auto& input : inputs)  // the same spelling, before the file exists
     for(const auto& p : paths)
@@ -462,6 +457,43 @@ void report_out_of_memory(Progress& progress)
   std::cerr << "direction_field: error: out of memory" << (step.empty() ? "" : " while " + step) << std::endl;
 }
 
+// --on faces: the field on the faces, its files and its report.
+int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& progress, Program_timings& timings,
+                 Output_files& outputs)
+{
+  face_field_run::Face_field field;
+  double compute_ms = 0.;
+  progress.begin("computing the field on faces", compute_ms);
+  try
+  {
+    field = face_field_run::compute(o, input.mesh);
+  }
+  catch(const SMDF::Invalid_input_error& e)
+  {
+    throw Usage_error(in_file_numbering(e, input));
+  }
+  progress.end();
+  if(!field.result.converged)
+    std::cerr << "direction_field: warning: the eigen-solve stopped after " << field.result.iterations
+              << " iterations with residual " << compact(field.result.residual) << ", above the tolerance" << std::endl;
+  progress.begin("writing", timings.write);
+  if(!o.mesh_out.empty()) exchange_files::write_mesh(o.mesh_out, outputs.stream(o.mesh_out), input.mesh);
+  face_field_run::write_files(o, input.mesh, field, outputs);
+  outputs.close_all_except(o.json_file);
+  progress.end();
+  if(!o.json_file.empty())
+  {
+    face_field_run::write_json(outputs.stream(o.json_file), o, input, field, timings);
+    outputs.close(o.json_file);
+  }
+  if(o.json) face_field_run::write_json(std::cout, o, input, field, timings);
+  else face_field_run::write_summary(std::cout, o, input, field);
+  std::cout.flush();
+  if(!std::cout) throw Usage_error("cannot write to standard output");
+  outputs.commit();
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
@@ -503,6 +535,7 @@ static int run(int argc, char** argv)
     const Repaired_mesh<Mesh> input = repair_into_mesh<Mesh>(soup, o.mesh);
     soup = Polygon_soup();
     progress.end();
+    if(o.on == "faces") return run_on_faces(o, input, progress, timings, outputs);
     Computed_field field(input.mesh);
     double compute_ms = 0.;
     progress.begin("computing the field", compute_ms);
@@ -516,6 +549,12 @@ static int run(int argc, char** argv)
                                                                            field.magnitudes, field.singular_faces,
                                                                            field.result, outputs);
     if(!o.png.empty()) write_picture(o, input.mesh, field, streamlines, outputs);
+    if(!o.sharp.empty())
+    {
+      std::vector<unsigned char> is_feature;
+      SMDF::IO::write_sharp(outputs.stream(o.sharp), face_field_run::field_data(input.mesh, o.degree),
+                            face_field_run::feature_edges(o, input.mesh, is_feature));
+    }
     outputs.close_all_except(o.json_file);
     progress.end();
     if(!o.json_file.empty())

@@ -6,7 +6,7 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FILES_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FILES_H
 
-#include "python_results.h"
+#include "python_face_field.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>

@@ -14,6 +14,7 @@ PYBIND11_MODULE(_core, m)
   py::register_exception<SMDF::Computation_interrupted>(m, "ComputationInterrupted", PyExc_RuntimeError);
   bind_result(m);
   bind_field(m);
+  bind_face_field(m);
   bind_files(m);
   m.def("set_openblas_thread_control", &SMDF::set_openblas_thread_control, py::arg("enabled"),
         "Lets the factorization set OpenBLAS's process-wide number of threads to one while its own threads\n"

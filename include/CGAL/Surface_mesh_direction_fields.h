@@ -22,6 +22,7 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_directions.h>
+#include <CGAL/Surface_mesh_direction_fields/globally_optimal_face_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/direction_field_files.h>
 #include <CGAL/Surface_mesh_direction_fields/openblas_thread_control.h>
 #include <CGAL/Surface_mesh_direction_fields/streamlines.h>

@@ -43,6 +43,22 @@ class DirectionField(_core.DirectionField):
         return super().compute(**options)
 
 
+def _face_keywords(*, degree: int = 4, align: Optional[str] = None, guidance: Any = None,
+                   lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, constraints: Any = None,
+                   boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
+                   intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
+                   seed: int = 0) -> None:
+    """The keyword arguments of a field on faces, with the defaults the C++ side applies."""
+
+
+def compute_face_directions(V: Any, F: Any, /, **options: Any) -> "FaceField":
+    return _core.compute_face_directions(V, F, **options)
+
+
+compute_face_directions.__doc__ = _core.compute_face_directions.__doc__
+compute_face_directions.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+    [inspect.Parameter(name, inspect.Parameter.POSITIONAL_ONLY) for name in ("V", "F")] +
+    list(inspect.signature(_face_keywords).parameters.values()), return_annotation="FaceField")
 compute_globally_optimal_directions.__doc__ = _core._compute_doc
 compute_globally_optimal_directions.__signature__ = _signature("V", "F")  # type: ignore[attr-defined]
 DirectionField.compute.__doc__ = _core._compute_doc

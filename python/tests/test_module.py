@@ -173,6 +173,68 @@ def test_signatures_show_every_keyword_as_the_stubs_do():
         assert list(parameters) == stub[0]
         assert {n: p.default for n, p in parameters.items() if p.default is not p.empty} == stub[1]
         assert "anti-holomorphic" in function.__doc__ and "intrinsic_mollification" in function.__doc__
+    names, defaults = stub_parameters("compute_face_directions")
+    parameters = inspect.signature(smdf.compute_face_directions).parameters
+    assert list(parameters) == names
+    assert {n: p.default for n, p in parameters.items() if p.default is not p.empty} == defaults
+    # the keywords the C++ side accepts are exactly these
+    V, F = refined_octahedron_arrays(1)
+    for name in names[2:]:
+        smdf.compute_face_directions(V, F, **{name: defaults[name]})
+    with pytest.raises(TypeError, match="'s'"):
+        smdf.compute_face_directions(V, F, s=0.0)
+
+
+def refined_octahedron_arrays(levels):
+    return sphere(levels)
+
+
+def test_face_field_on_a_sphere():
+    """Poincare-Hopf at the vertices, the matching closing to the indices, PD1 and PD2 in each face."""
+    V, F = refined_octahedron_arrays(3)
+    r = smdf.compute_face_directions(V, F, degree=4)
+    assert r.index_sum == 8 and r.singular_vertices[:, 1].sum() == 8 and r.euler_characteristics == [2]
+    assert r.boundary_indices == [0] and r.converged and abs(r.eigenvalues[0] - 4) < 0.2
+    normals = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    normals /= np.linalg.norm(normals, axis=1)[:, None]
+    for d in (r.face_directions, r.pd2):
+        assert np.allclose(np.linalg.norm(d, axis=1), 1) and np.abs((d * normals).sum(axis=1)).max() < 1e-9
+    assert np.abs((r.face_directions * r.pd2).sum(axis=1)).max() < 1e-9  # n = 4: a quarter turn
+    assert np.array_equal(r.mismatch, r.matching % 4)
+    # counter-clockwise around vertex F[f, c+1], edge c of f leads from f to the face across: sum the jumps
+    turns = np.zeros(len(V), dtype=np.int64)
+    for f in range(len(F)):
+        for c in range(3):
+            turns[F[f, (c + 1) % 3]] += r.matching[f, c]
+    # each interior edge was counted from both faces: the jumps of one direction are those of the other, negated
+    index = np.zeros(len(V), dtype=np.int64)
+    index[r.singular_vertices[:, 0]] = r.singular_vertices[:, 1]
+    assert np.all((turns + index) % 4 == 0)
+
+
+def test_face_field_program_and_module_agree(shared, program, tmp_path):
+    """The program's --on faces and the module find the same singular vertices on a shared mesh."""
+    direction_field = program
+    path = os.path.join(shared, "fertility.off")
+    subprocess.run([direction_field, path, "--on", "faces", "--sing", str(tmp_path / "f.sing"), "--mesh-out",
+                    str(tmp_path / "f.off"), "--quiet"], check=True, capture_output=True)
+    V, F, _ = smdf.read_mesh(str(tmp_path / "f.off"))
+    r = smdf.compute_face_directions(V, F, degree=4)
+    listed = np.loadtxt(tmp_path / "f.sing", skiprows=1, dtype=np.int64)
+    assert np.array_equal(np.sort(listed, axis=0), np.sort(r.singular_vertices, axis=0))
+
+
+def test_face_field_constraints_and_refusals():
+    V, F = refined_octahedron_arrays(2)
+    edge = V[F[0, 1]] - V[F[0, 0]]
+    r = smdf.compute_face_directions(V, F, degree=1, constraints=(np.array([0]), edge[None, :]))
+    assert np.allclose(r.face_directions[0], edge / np.linalg.norm(edge))
+    with pytest.raises(smdf.InvalidInputError):
+        smdf.compute_face_directions(V, F, degree=3, align="curvature")
+    with pytest.raises(ValueError, match="face 99999"):
+        smdf.compute_face_directions(V, F, constraints=(np.array([99999]), edge[None, :]))
+    with pytest.raises(ValueError, match="shape"):
+        smdf.compute_face_directions(V, F, guidance=np.ones((len(V), 3)))  # one row per face
 
 
 def test_defaults_given_explicitly_change_nothing():

@@ -72,6 +72,11 @@ struct Direction_field_data
   std::vector<std::pair<std::size_t, int> > singularities;
   /// the barycentre of each singular face, in the order of `singularities`
   std::vector<Vector> singularity_points;
+  /// for a field on faces: the singular interior vertices, vertex index and integer `k` (the index is `k / n`)
+  std::vector<std::pair<std::size_t, int> > vertex_singularities;
+  /// for a field on faces: per face `f` and side `c` (from `faces[f][c]` to `faces[f][(c+1)%3]`), the period
+  /// jump from `f` to the face across that side (see `edge_matching_map`); 0 on the boundary
+  std::vector<std::array<int, 3> > face_matching;
 };
 
 namespace internal {

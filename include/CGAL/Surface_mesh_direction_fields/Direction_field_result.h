@@ -144,6 +144,71 @@ struct Direction_field_result
   Direction_field_timings timings;
 };
 
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+What the solve of a field on faces found on one connected component
+(`compute_globally_optimal_face_directions()`; user manual, section \ref SMDF_faces).
+*/
+struct Face_field_component_report
+{
+  /// number of vertices of the component
+  std::size_t number_of_vertices = 0;
+  /// number of faces of the component (the unknowns of its problem)
+  std::size_t number_of_faces = 0;
+  /// Euler characteristic \f$ \chi = V - E + F \f$ of the component
+  int euler_characteristic = 0;
+  /// `true` if the component has no boundary
+  bool is_closed = false;
+  /// smallest eigenvalue \f$ \lambda_1 \f$ of the pencil on faces; NaN where it was not computed
+  double eigenvalue = 0.;
+  /// the \f$ \lambda_t \f$ of the aligned or constrained solve (0 for the smoothest field)
+  double lambda = 0.;
+  /// the alignment weight \f$ t = 1 / (1 + \|u\|_M) \f$ achieved (0 without guidance)
+  double alignment_weight = 0.;
+  /// number of inverse iterations (plus the solves of the root finding for an alignment weight)
+  std::size_t iterations = 0;
+  /// final relative residual of the eigen-solve (0 for a direct solve)
+  double residual = 0.;
+  /// `true` if the residual reached the requested tolerance (or the field came from a direct solve)
+  bool converged = false;
+  /// sum of the integer indices `k` of the component's interior vertices
+  long long index_sum = 0;
+  /// the boundary's contribution `B`: `index_sum + B` is `n * euler_characteristic` (0 on a closed
+  /// component); `B` is the boundary's turning times `n` plus the field's rotation along the faces at the
+  /// boundary, in turns (user manual, section \ref SMDF_faces)
+  long long boundary_index = 0;
+  /// number of interior vertices with a non-zero index
+  std::size_t number_of_singular_vertices = 0;
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+The value returned by `compute_globally_optimal_face_directions()`.
+*/
+struct Face_direction_field_result
+{
+  /// the degree `n` of the field
+  int degree = 1;
+  /// one entry per connected component
+  std::vector<Face_field_component_report> components;
+  /// sum of the indices `k` over all interior vertices
+  long long index_sum = 0;
+  /// number of interior vertices with a non-zero index
+  std::size_t number_of_singular_vertices = 0;
+  /// largest number of iterations over the components
+  std::size_t iterations = 0;
+  /// largest final residual over the components
+  double residual = 0.;
+  /// `true` if every component converged
+  bool converged = true;
+  /// the length added to every edge by the intrinsic mollification (0 if the mesh needed none)
+  double mollification = 0.;
+  /// wall-clock times
+  Direction_field_timings timings;
+};
+
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 

@@ -18,6 +18,7 @@
 // Every writer and reader of direction fields, one header per format.
 #include <CGAL/Surface_mesh_direction_fields/IO/PLY.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/VTK.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/face_field_files.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/field_lines.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/quad_mesher_files.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/singularity_list.h>

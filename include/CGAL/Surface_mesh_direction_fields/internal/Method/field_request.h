@@ -85,6 +85,32 @@ struct Field_answer
   std::vector<std::pair<std::size_t, int> > singular_faces;  // (face, k), in face order
 };
 
+// A field on faces as the named parameters ask for it, by vertex and face
+// index (user manual, section "Fields on Faces").
+struct Face_field_request
+{
+  int degree = 1;
+  unsigned int max_iterations = 1000;
+  double residual_tolerance = 1e-10;
+  unsigned int random_seed = 0;
+  Principal_curvature_alignment curvature = Principal_curvature_alignment::NONE;
+  std::vector<Vec3> guidance;  // per face, finite; empty: none
+  Alignment_request alignment;
+  Boundary_alignment boundary = Boundary_alignment::NONE;
+  std::vector<unsigned char> constrained;   // per face; empty: none
+  std::vector<Vec3> constrained_direction;  // per face (read where constrained)
+  std::vector<std::array<std::size_t, 2> > feature_edges;  // the two vertices of each feature edge
+  std::function<bool(double)> progress;
+};
+
+// The field on faces of one call, by vertex and face index.
+struct Face_field_answer
+{
+  std::vector<Vec3> directions;  // unit direction per face
+  std::vector<int> vertex_index;  // k per vertex (0 on the boundary)
+  std::vector<int> matching;      // per corner 3f+c (the period jump across its side), 0 on the border
+};
+
 // One loop of prescription_loops(): the corners along whose sides it runs,
 // each with +1 if the loop follows the side's direction, -1 otherwise.
 typedef std::vector<std::pair<std::size_t, int> > Corner_loop;

@@ -1,0 +1,208 @@
+// --on faces: the field on the faces of the repaired mesh, with its singular
+// vertices and its matching, and the files quad meshers read (.rosy, .ffield,
+// .sharp) and Directional reads (.rawfield, .sing, .matching).
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_FACE_FIELD_RUN_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_FACE_FIELD_RUN_H
+
+#include "command_line_options.h"
+#include "file_io/output_files.h"
+#include "file_io/read_and_repair_mesh.h"
+#include "reports.h"
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace face_field_run {
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+
+// The mesh and the field on its faces as the files write them.
+template <typename Mesh>
+SMDF::Direction_field_data field_data(const Mesh& mesh, int degree)
+{
+  SMDF::Direction_field_data data;
+  data.degree = degree;
+  for(auto v : mesh.vertices()) data.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  for(auto f : mesh.faces())
+  {
+    std::array<std::size_t, 3> t;
+    int c = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = v;
+    data.faces.push_back(t);
+  }
+  return data;
+}
+
+// The feature edges of --feature-angle (CGAL's detection), as vertex pairs.
+template <typename Mesh>
+std::vector<std::array<std::size_t, 2> > feature_edges(const Options& o, const Mesh& mesh,
+                                                      std::vector<unsigned char>& is_feature)
+{
+  is_feature.assign(mesh.number_of_edges(), 0);
+  std::vector<std::array<std::size_t, 2> > edges;
+  if(!(o.feature_angle > 0.)) return edges;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.feature_angle, CGAL::make_property_map(is_feature));
+  for(auto e : mesh.edges())
+    if(is_feature[e]) edges.push_back({mesh.source(mesh.halfedge(e)), mesh.target(mesh.halfedge(e))});
+  return edges;
+}
+
+// --align and --constrain-boundary as the library's enumerations (both fields).
+inline SMDF::Principal_curvature_alignment curvature_alignment(const Options& o)
+{
+  return o.align == "none"            ? SMDF::Principal_curvature_alignment::NONE
+         : o.align == "min-curvature" ? SMDF::Principal_curvature_alignment::MINIMUM
+                                      : SMDF::Principal_curvature_alignment::MAXIMUM;
+}
+
+inline SMDF::Boundary_alignment boundary_alignment(const Options& o)
+{
+  return o.constrain_boundary == "tangent"  ? SMDF::Boundary_alignment::TANGENT
+         : o.constrain_boundary == "normal" ? SMDF::Boundary_alignment::NORMAL
+                                            : SMDF::Boundary_alignment::NONE;
+}
+
+struct Face_field
+{
+  SMDF::Face_direction_field_result result;
+  SMDF::Direction_field_data data;
+};
+
+// The library call with the options' named parameters; the matching per face side.
+template <typename Mesh>
+Face_field compute(const Options& o, const Mesh& mesh)
+{
+  typedef typename Mesh::Face_index Face_index;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  Face_field field;
+  field.data = field_data(mesh, o.degree);
+  std::vector<unsigned char> is_feature;
+  feature_edges(o, mesh, is_feature);
+  std::vector<typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3> directions(mesh.number_of_faces());
+  std::vector<int> matching(mesh.number_of_edges(), 0);
+  std::vector<std::pair<Vertex_index, int> > singular;
+  auto np = CGAL::parameters::degree(o.degree)
+              .random_seed(o.seed)
+              .number_of_iterations(o.max_iterations)
+              .residual_tolerance(o.tolerance)
+              .principal_curvature_alignment(curvature_alignment(o))
+              .boundary_alignment(boundary_alignment(o))
+              .edge_is_feature_map(CGAL::make_property_map(is_feature))
+              .singularities_output_iterator(std::back_inserter(singular))
+              .edge_matching_map(CGAL::make_property_map(matching));
+  auto direction_map = CGAL::make_property_map(directions);
+  if(o.weight_given)
+    field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np.alignment_weight(o.weight));
+  else if(o.lambda_given)
+    field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np.alignment_lambda(o.lambda));
+  else
+    field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np);
+  for(Face_index f : mesh.faces())
+    field.data.face_directions.push_back({directions[f].x(), directions[f].y(), directions[f].z()});
+  for(const auto& vk : singular) field.data.vertex_singularities.emplace_back(std::size_t(vk.first), vk.second);
+  // per face side: the jump from this face, so the stored one (from the face of halfedge(e)) or its negative
+  field.data.face_matching.assign(mesh.number_of_faces(), {0, 0, 0});
+  for(Face_index f : mesh.faces())
+  {
+    for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+    {
+      // side c of data.faces[f] starts at the source of h (vertices_around_face() starts at a target)
+      const std::array<std::size_t, 3>& t = field.data.faces[f];
+      const int c = t[0] == std::size_t(mesh.source(h)) ? 0 : t[1] == std::size_t(mesh.source(h)) ? 1 : 2;
+      const auto e = mesh.edge(h);
+      const typename Mesh::Edge_index listed(static_cast<typename Mesh::size_type>(std::size_t(e)));
+      field.data.face_matching[f][c] = mesh.halfedge(listed) == h ? matching[e] : -matching[e];
+    }
+  }
+  return field;
+}
+
+// The files of a field on faces.
+template <typename Mesh>
+void write_files(const Options& o, const Mesh& mesh, const Face_field& field, Output_files& outputs)
+{
+  if(!o.rosy.empty()) SMDF::IO::write_rosy(outputs.stream(o.rosy), field.data);
+  if(!o.ffield.empty()) SMDF::IO::write_ffield(outputs.stream(o.ffield), field.data);
+  if(!o.rawfield.empty()) SMDF::IO::write_rawfield(outputs.stream(o.rawfield), field.data);
+  if(!o.sing.empty()) SMDF::IO::write_vertex_singularities(outputs.stream(o.sing), field.data);
+  if(!o.matching.empty()) SMDF::IO::write_matching(outputs.stream(o.matching), field.data);
+  if(!o.singularities.empty())
+  {
+    std::ostream& os = outputs.stream(o.singularities);
+    for(const auto& vk : field.data.vertex_singularities) os << vk.first << " " << vk.second << "\n";
+  }
+  if(!o.sharp.empty())
+  {
+    std::vector<unsigned char> is_feature;
+    SMDF::IO::write_sharp(outputs.stream(o.sharp), field.data, feature_edges(o, mesh, is_feature));
+  }
+}
+
+// The singular vertices whose k is a multiple of n (index +-1, +-2, ...): a
+// reader that recomputes the matching and reads the vertex's turning modulo n
+// (QuadWild, vcglib's UpdateSingularByCross) sees no singularity there.
+inline std::size_t hidden_modulo_n(const SMDF::Direction_field_data& data)
+{
+  std::size_t hidden = 0;
+  for(const auto& vk : data.vertex_singularities) hidden += vk.second % data.degree == 0;
+  return hidden;
+}
+
+// One line of JSON (the keys of direction_field/README.md, "--on faces").
+template <typename Mesh>
+void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const Face_field& field,
+                const Program_timings& timings)
+{
+  const SMDF::Face_direction_field_result& r = field.result;
+  long long chi = 0, boundary = 0;
+  for(const auto& c : r.components) { chi += c.euler_characteristic; boundary += c.boundary_index; }
+  os << "{\"mesh\":\"" << json_escape(o.mesh) << "\",\"field_location\":\"faces\""
+     << ",\"vertices\":" << input.file_vertices << ",\"faces\":" << input.file_faces
+     << ",\"mesh_vertices\":" << input.mesh.number_of_vertices() << ",\"mesh_faces\":" << input.mesh.number_of_faces()
+     << ",\"components\":" << r.components.size() << ",\"euler_characteristic\":" << chi << ",\"degree\":" << r.degree
+     << ",\"eigenvalues\":[";
+  for(std::size_t i = 0; i < r.components.size(); ++i) os << (i ? "," : "") << number(r.components[i].eigenvalue);
+  os << "],\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
+     << ",\"converged\":" << (r.converged ? "true" : "false")
+     << ",\"singular_vertices\":" << r.number_of_singular_vertices << ",\"index_sum\":" << r.index_sum
+     << ",\"boundary_index\":" << boundary << ",\"mollification\":" << number(r.mollification)
+     << ",\"singular_vertices_multiple_of_n\":" << hidden_modulo_n(field.data)
+     << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
+     << ",\"factorization\":" << number(r.timings.factorization_ms) << ",\"solve\":" << number(r.timings.solve_ms)
+     << ",\"total\":" << number(r.timings.total_ms) << ",\"read\":" << number(timings.read)
+     << ",\"repair\":" << number(timings.repair) << ",\"write\":" << number(timings.write) << "}}\n";
+}
+
+template <typename Mesh>
+void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const Face_field& field)
+{
+  const SMDF::Face_direction_field_result& r = field.result;
+  os << "mesh            " << o.mesh << "\n"
+     << "size            " << input.mesh.number_of_vertices() << " vertices, " << input.mesh.number_of_faces()
+     << " faces, " << r.components.size() << " component(s)\n"
+     << "field           on faces, degree n = " << r.degree << "\n";
+  if(input.report.any()) os << "repairs         " << input.report.summary() << "\n";
+  for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
+  {
+    const auto& c = r.components[i];
+    os << "component " << i << "  eigenvalue " << c.eigenvalue << ", " << c.iterations << " iterations, "
+       << c.number_of_singular_vertices << " singular vertices, index sum " << c.index_sum << "/" << r.degree
+       << " (boundary " << c.boundary_index << "/" << r.degree << ", Euler characteristic " << c.euler_characteristic
+       << ")\n";
+  }
+  if(const std::size_t hidden = hidden_modulo_n(field.data))
+    os << "note            " << hidden << " singular vertices have an index k that is a multiple of n: readers that "
+       << "recompute the matching modulo n (QuadWild) see no singularity there\n";
+  os << "timings         " << compact(r.timings.total_ms) << " ms\n";
+}
+
+} // namespace face_field_run
+
+#endif

@@ -1,0 +1,266 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FACE_FIELDS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FACE_FIELDS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <vector>
+
+// The method on the dual mesh (user manual, section "Fields on Faces"): one
+// coefficient u_f per face, written in the face's frame (its first side,
+// faces[f][0] -> faces[f][1], at angle 0), the energy on the dual edges with
+// the transport across each edge, the face areas as the mass. Everything is
+// computed from the (mollified) edge lengths, as for vertex fields.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// The angle of side c (faces[f][c] -> faces[f][c+1]) in face f's frame:
+// walking counter-clockwise around the triangle turns by pi minus the corner
+// angle at each vertex.
+inline double side_angle(const Tangent_spaces& ts, std::size_t f, int c)
+{
+  const double* alpha = &ts.corner_angle[3 * f];
+  if(c == 0) return 0.;
+  return c == 1 ? CGAL_PI - alpha[1] : CGAL_PI + alpha[0];
+}
+
+// Per corner 3f+c whose side is interior: the transport rho (an angle of
+// directions, not of n-th powers) across that side from f to the twin's face
+// g, and the weight of the dual edge. A vector at angle beta from the side in
+// f is the vector at angle beta from the same side in g, so
+// rho = (angle of the side in g, reversed) - (its angle in f).
+struct Dual_connection
+{
+  std::vector<double> transport;  // 0 on the border
+  std::vector<double> weight;     // 0 on the border
+};
+
+// The weight |e| / |e*| of the dual edge: the side's length over the distance
+// between the barycentres of its two faces laid out flat across it (the
+// diagonal Hodge star of the barycentric dual). It is positive for every pair
+// of faces with area, unlike the circumcentric dual's cotangent weights.
+inline double dual_edge_weight(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t corner,
+                               std::size_t twin)
+{
+  const std::size_t f = corner / 3, g = twin / 3;
+  const int c = static_cast<int>(corner % 3), d = static_cast<int>(twin % 3);
+  const Face_geometry gf = face_geometry(m, f, ts.mollification), gg = face_geometry(m, g, ts.mollification);
+  const double length = std::sqrt(gf.squared_length[c]);
+  // with the side a -> b of f along the x axis and its midpoint at 0, f's third vertex is at (x_f, h_f)
+  // and g's at (x_g, -h_g); the corner of g at a is (d+1) % 3, its sides a -> c_g then a -> b
+  const double x_f = gf.corner_dot[c] / length - 0.5 * length;
+  const double x_g = gg.corner_dot[(d + 1) % 3] / length - 0.5 * length;
+  const double h_f = 2. * ts.face_area[f] / length, h_g = 2. * ts.face_area[g] / length;
+  const double dual_length = std::sqrt((x_f - x_g) * (x_f - x_g) + (h_f + h_g) * (h_f + h_g)) / 3.;
+  return length / dual_length;
+}
+
+inline Dual_connection dual_connection(const Indexed_mesh& m, const Tangent_spaces& ts)
+{
+  Dual_connection dc;
+  dc.transport.assign(3 * m.number_of_faces(), 0.);
+  dc.weight.assign(3 * m.number_of_faces(), 0.);
+  parallel_for_each_index(3 * m.number_of_faces(), [&](std::size_t corner) {
+    const std::size_t twin = m.twin_corner[corner];
+    if(twin == no_index) return;
+    const double in_f = side_angle(ts, corner / 3, static_cast<int>(corner % 3));
+    const double in_g = side_angle(ts, twin / 3, static_cast<int>(twin % 3)) + CGAL_PI;
+    dc.transport[corner] = reduce_angle(in_g - in_f);
+    dc.weight[corner] = dual_edge_weight(m, ts, corner, twin);
+  });
+  return dc;
+}
+
+// The faces of a component numbered 0..|F_c|-1 (their order in comp.faces).
+inline std::vector<std::size_t> local_face_numbers(const Component& comp, std::size_t number_of_faces)
+{
+  std::vector<std::size_t> local(number_of_faces, no_index);
+  for(std::size_t i = 0; i < comp.faces.size(); ++i) local[comp.faces[i]] = i;
+  return local;
+}
+
+struct Face_energy_and_mass
+{
+  Complex_sparse_matrix energy, mass;
+};
+
+// A and M of one component for degree n: E(u) = sum over dual edges of
+// w |u_g - r_fg u_f|^2 with r_fg = exp(i n rho_fg), M = diag(|f|). Each
+// interior side is visited from both faces; the visit from f adds w to A_ff
+// and -w r_fg to A_gf, so both triangles of the Hermitian A are written.
+inline Face_energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                                 const Dual_connection& dc, const Component& comp, int n,
+                                                 const std::vector<std::size_t>& local)
+{
+  const Eigen::Index nf = static_cast<Eigen::Index>(comp.faces.size());
+  std::vector<Eigen::Triplet<Complex> > energy, mass;
+  energy.reserve(4 * comp.faces.size());
+  mass.reserve(comp.faces.size());
+  for(std::size_t i = 0; i < comp.faces.size(); ++i)
+  {
+    const std::size_t f = comp.faces[i];
+    const Eigen::Index row = static_cast<Eigen::Index>(i);
+    mass.emplace_back(row, row, Complex(ts.face_area[f], 0.));
+    energy.emplace_back(row, row, Complex(0., 0.));  // a diagonal entry even on an isolated face
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::size_t corner = 3 * f + static_cast<std::size_t>(c), twin = m.twin_corner[corner];
+      if(twin == no_index) continue;
+      const double w = dc.weight[corner];
+      const Eigen::Index j = static_cast<Eigen::Index>(local[twin / 3]);
+      energy.emplace_back(row, row, Complex(w, 0.));
+      energy.emplace_back(j, row, -w * std::polar(1., static_cast<double>(n) * dc.transport[corner]));
+    }
+  }
+  Face_energy_and_mass em;
+  em.energy.resize(nf, nf);
+  em.mass.resize(nf, nf);
+  em.energy.setFromTriplets(energy.begin(), energy.end());
+  em.mass.setFromTriplets(mass.begin(), mass.end());
+  return em;
+}
+
+// The principal-curvature line field per face (n = 2 coefficient): the
+// traceless part of the face's shape operator from the dihedral angles of its
+// three sides, each side's bending shared by its two faces:
+// q_f = -1/(8 |f|) sum over the sides e of f of exp(2 i angle_f(e)) beta_e |e|,
+// pointing along the maximum curvature direction (a convex edge bends across it).
+inline std::vector<Complex> face_curvature_line_field(const Indexed_mesh& m, const Tangent_spaces& ts)
+{
+  std::vector<Complex> q(m.number_of_faces(), Complex(0., 0.));
+  parallel_for_each_index(m.number_of_faces(), [&](std::size_t f) {
+    const Face_geometry g = face_geometry(m, f, ts.mollification);
+    Complex sum(0., 0.);
+    for(int c = 0; c < 3; ++c)
+    {
+      const double beta = dihedral_angle(m, 3 * f + static_cast<std::size_t>(c));
+      sum += -0.125 * beta * std::sqrt(g.squared_length[c]) * std::polar(1., 2. * side_angle(ts, f, c));
+    }
+    q[f] = sum / ts.face_area[f];
+  });
+  return q;
+}
+
+// The 3D frame of face f: its first side's unit direction and the unit
+// normal (zero for a face without embedded area).
+inline std::array<Vec3, 2> face_frame(const Indexed_mesh& m, std::size_t f)
+{
+  const auto& t = m.faces[f];
+  return {normalized(m.points[t[1]] - m.points[t[0]]), triangle_unit_normal(m.points, t)};
+}
+
+// The angle in face f's frame of a 3D vector w (projected onto the face).
+inline double angle_in_face(const Indexed_mesh& m, std::size_t f, const Vec3& w)
+{
+  const std::array<Vec3, 2> frame = face_frame(m, f);
+  return std::atan2(dot(w, cross(frame[1], frame[0])), dot(w, frame[0]));
+}
+
+// The unit 3D direction at angle `angle` in face f's frame.
+inline Vec3 direction_in_face(const Indexed_mesh& m, std::size_t f, double angle)
+{
+  const std::array<Vec3, 2> frame = face_frame(m, f);
+  return normalized(rotated(frame[0], frame[1], angle));
+}
+
+// Where the field turns at the vertices (user manual, section "Fields on
+// Faces"): omega across each dual edge, the index k_v of every interior
+// vertex, the principal matching of every interior side, and per component
+// the boundary's contribution B (sum over interior vertices of k_v plus B is
+// n chi).
+struct Face_field_turning
+{
+  std::vector<int> vertex_index;       // k_v; 0 on boundary and isolated vertices
+  std::vector<int> matching;           // per corner 3f+c: the period jump from f to the twin's face; 0 on the border
+  std::vector<long long> boundary_index;  // per component
+};
+
+// omega_fg in (-pi, pi]: the rotation from r_fg u_f to u_g (zero coefficients
+// taken at angle 0), from the angle theta of each coefficient.
+inline double face_rotation(const std::vector<double>& theta, const Dual_connection& dc, int n, std::size_t corner,
+                            std::size_t twin)
+{
+  return reduce_angle(theta[twin / 3] - theta[corner / 3] - static_cast<double>(n) * dc.transport[corner]);
+}
+
+// The turn of the fan of v: the rotations omega across the interior sides
+// between consecutive corners plus n times the angle defect (2 pi - sum of
+// the corner angles inside, pi - that sum on the boundary).
+inline double fan_turn(const Indexed_mesh& m, const Tangent_spaces& ts, const Dual_connection& dc,
+                       const std::vector<double>& theta, int n, std::size_t v)
+{
+  double turn = (m.is_border_vertex[v] ? CGAL_PI : 2. * CGAL_PI);
+  double rotation = 0.;
+  for(std::size_t corner : m.fan(v))
+  {
+    turn -= ts.corner_angle[corner];
+    // the corner's second side, reversed, is the side of the previous corner of f
+    const std::size_t side = Indexed_mesh::previous_corner(corner), twin = m.twin_corner[side];
+    if(twin != no_index) rotation += face_rotation(theta, dc, n, side, twin);
+  }
+  return rotation + static_cast<double>(n) * turn;
+}
+
+inline Face_field_turning face_field_turning(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                             const Dual_connection& dc, const Components& comps,
+                                             const std::vector<Complex>& u, int n)
+{
+  std::vector<double> theta(u.size());
+  for(std::size_t f = 0; f < u.size(); ++f) theta[f] = std::arg(u[f]);
+  Face_field_turning turning;
+  turning.vertex_index.assign(m.number_of_vertices(), 0);
+  turning.boundary_index.assign(comps.list.size(), 0);
+  std::vector<double> boundary_turn(comps.list.size(), 0.);
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    if(m.fan_size(v) == 0) continue;
+    const double turn = fan_turn(m, ts, dc, theta, n, v) / (2. * CGAL_PI);
+    if(m.is_border_vertex[v])
+      boundary_turn[comps.component_of_face[m.fan_corners[m.fan_offsets[v]] / 3]] += turn;
+    else
+      turning.vertex_index[v] = static_cast<int>(std::lround(turn));
+  }
+  for(std::size_t c = 0; c < comps.list.size(); ++c) turning.boundary_index[c] = std::llround(boundary_turn[c]);
+  // the principal matching: the whole turns of 2 pi / n between the first
+  // direction of f, transported, and the first direction of g
+  turning.matching.assign(3 * m.number_of_faces(), 0);
+  for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
+  {
+    const std::size_t twin = m.twin_corner[corner];
+    if(twin == no_index) continue;
+    const double jump = theta[twin / 3] - theta[corner / 3] - static_cast<double>(n) * dc.transport[corner] -
+                        face_rotation(theta, dc, n, corner, twin);
+    turning.matching[corner] = static_cast<int>(std::lround(jump / (2. * CGAL_PI)));
+  }
+  return turning;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_FACE_FIELDS_H

@@ -1,0 +1,223 @@
+// compute_face_directions(): the field on faces (C++
+// compute_globally_optimal_face_directions()) as numpy arrays: a direction
+// per face and its rotation by 2 pi / n (libigl's PD1 and PD2 for n = 4), the
+// singular vertices, the period jump and the mismatch per face edge.
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FACE_FIELD_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FACE_FIELD_H
+
+#include "python_results.h"
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh_direction_fields/globally_optimal_face_directions.h>
+
+namespace {
+
+struct Face_field_result
+{
+  py::array_t<double> face_directions, pd2;
+  py::array_t<long long> singular_vertices, matching, mismatch;
+  SMDF::Face_direction_field_result report;
+};
+
+const char* const face_option_names[] = {"degree", "align", "boundary", "guidance", "alignment_weight", "lambda_t",
+                                         "constraints", "feature_edges", "feature_angle", "intrinsic_mollification",
+                                         "max_iterations", "tolerance", "seed"};
+
+struct Face_options
+{
+  Options common;                                                   // degree, align, boundary, features, ...
+  std::vector<Kernel::Vector_3> guidance;                           // per face; empty: none
+  std::vector<std::pair<Face_index, Kernel::Vector_3> > constraints;  // (face, direction)
+};
+
+// constraints = (face ids, directions k x 3)
+void read_face_constraints(const py::object& value, const Mesh& mesh, Face_options& o)
+{
+  const py::tuple pair = option_as<py::tuple>(value, "constraints", "a pair (face ids, directions)");
+  if(pair.size() != 2) refuse("constraints must be a pair (face ids, directions of shape (k, 3))");
+  const Index_array ids = integer_array(pair[0], "constraints' face ids");
+  if(ids.ndim() != 1) refuse("constraints: the face ids must be a 1-dimensional array");
+  const Float_array d = rows_of_three(pair[1], static_cast<std::size_t>(ids.shape(0)), "constraints' directions");
+  const auto id = ids.unchecked<1>();
+  const auto dir = d.unchecked<2>();
+  for(py::ssize_t i = 0; i < ids.shape(0); ++i)
+  {
+    if(id(i) < 0 || static_cast<std::size_t>(id(i)) >= mesh.number_of_faces())
+      refuse("constraints: face " + std::to_string(id(i)) + " is not a face of the mesh");
+    o.constraints.emplace_back(Face_index(static_cast<Mesh::size_type>(id(i))),
+                               Kernel::Vector_3(dir(i, 0), dir(i, 1), dir(i, 2)));
+  }
+}
+
+Face_options read_face_options(const py::dict& kw, Mesh& mesh)
+{
+  py::dict common;
+  for(const auto& item : kw)
+  {
+    const std::string key = py::cast<std::string>(item.first);
+    if(std::find(std::begin(face_option_names), std::end(face_option_names), key) == std::end(face_option_names))
+      throw py::type_error("unexpected keyword argument '" + key + "'");
+    if(key != "guidance" && key != "constraints") common[item.first] = item.second;
+  }
+  Face_options o;
+  const bool guided = kw.contains("guidance") && !kw["guidance"].is_none();
+  if(guided) common["guidance"] = py::array_t<double>({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
+  o.common = read_options(common, mesh);  // the shared keywords, checked as for vertex fields
+  o.common.guidance.clear();
+  if(guided)
+  {
+    const Float_array g = rows_of_three(kw["guidance"], mesh.number_of_faces(), "guidance");
+    const auto r = g.unchecked<2>();
+    for(py::ssize_t i = 0; i < g.shape(0); ++i) o.guidance.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  }
+  if(kw.contains("constraints") && !kw["constraints"].is_none()) read_face_constraints(kw["constraints"], mesh, o);
+  return o;
+}
+
+// The library call (without the GIL) with the options' named parameters.
+SMDF::Face_direction_field_result compute_on_faces(Mesh& mesh, const Face_options& o,
+                                                   std::vector<Kernel::Vector_3>& directions,
+                                                   std::vector<std::pair<Vertex_index, int> >& singular,
+                                                   std::vector<int>& matching)
+{
+  std::vector<unsigned char> is_feature(mesh.number_of_edges(), 0);
+  for(Edge_index e : o.common.features) is_feature[e] = 1;
+  if(o.common.feature_angle)
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.common.feature_angle, CGAL::make_property_map(is_feature));
+  std::vector<Kernel::Vector_3> guidance = o.guidance;
+  std::vector<unsigned char> constrained(mesh.number_of_faces(), 0);
+  std::vector<Kernel::Vector_3> wanted(mesh.number_of_faces(), CGAL::NULL_VECTOR);
+  for(const auto& c : o.constraints) { constrained[c.first] = 1; wanted[c.first] = c.second; }
+  const auto np = CGAL::parameters::degree(o.common.degree)
+                    .principal_curvature_alignment(o.common.align)
+                    .boundary_alignment(o.common.boundary)
+                    .number_of_iterations(o.common.max_iterations)
+                    .residual_tolerance(o.common.tolerance)
+                    .random_seed(o.common.seed)
+                    .intrinsic_mollification(o.common.intrinsic_mollification)
+                    .edge_is_feature_map(CGAL::make_property_map(is_feature))
+                    .face_is_constrained_map(CGAL::make_property_map(constrained))
+                    .face_constrained_direction_map(CGAL::make_property_map(wanted))
+                    .singularities_output_iterator(std::back_inserter(singular))
+                    .edge_matching_map(CGAL::make_property_map(matching));
+  auto out = CGAL::make_property_map(directions);
+  auto with_guidance = [&](auto np_) {
+    if(guidance.empty()) return SMDF::compute_globally_optimal_face_directions(mesh, out, np_);
+    return SMDF::compute_globally_optimal_face_directions(mesh, out, np_.face_guidance_map(CGAL::make_property_map(guidance)));
+  };
+  if(o.common.alignment_weight) return with_guidance(np.alignment_weight(*o.common.alignment_weight));
+  if(o.common.lambda_t) return with_guidance(np.alignment_lambda(*o.common.lambda_t));
+  return with_guidance(np);
+}
+
+// The jump across each side of each face: F[f, c] -> F[f, (c+1) % 3], from f to the face across.
+py::array_t<long long> face_side_jumps(const Mesh& mesh, const Index_array& F, const std::vector<int>& matching)
+{
+  py::array_t<long long> jumps({static_cast<py::ssize_t>(mesh.number_of_faces()), py::ssize_t(3)});
+  auto j = jumps.mutable_unchecked<2>();
+  const auto rows = F.unchecked<2>();
+  for(py::ssize_t f = 0; f < rows.shape(0); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const Vertex_index a(static_cast<Mesh::size_type>(rows(f, c))), b(static_cast<Mesh::size_type>(rows(f, (c + 1) % 3)));
+      const auto h = CGAL::halfedge(a, b, mesh).first;  // in face f: make_mesh() keeps the rows' orientation
+      // the edge as edges() lists it (Surface_mesh's edge(h) remembers h as its halfedge)
+      const Edge_index listed(static_cast<Mesh::size_type>(std::size_t(mesh.edge(h))));
+      const bool border = mesh.is_border(mesh.opposite(h));
+      j(f, c) = border ? 0 : mesh.halfedge(listed) == h ? matching[listed] : -matching[listed];
+    }
+  return jumps;
+}
+
+Face_field_result compute_face_directions(const py::object& V, const py::object& F, const py::kwargs& kw)
+{
+  const Index_array rows = integer_array(F, "F");
+  Mesh mesh = make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"), rows);
+  const Face_options o = read_face_options(kw, mesh);
+  std::vector<Kernel::Vector_3> directions(mesh.number_of_faces(), CGAL::NULL_VECTOR);
+  std::vector<std::pair<Vertex_index, int> > singular;
+  std::vector<int> matching(mesh.number_of_edges(), 0);
+  Face_field_result r;
+  {
+    py::gil_scoped_release release;
+    r.report = compute_on_faces(mesh, o, directions, singular, matching);
+  }
+  const py::ssize_t nf = static_cast<py::ssize_t>(mesh.number_of_faces());
+  r.face_directions = py::array_t<double>({nf, py::ssize_t(3)});
+  r.pd2 = py::array_t<double>({nf, py::ssize_t(3)});
+  auto d = r.face_directions.mutable_unchecked<2>();
+  auto d2 = r.pd2.mutable_unchecked<2>();
+  const double turn = 2. * CGAL_PI / o.common.degree;
+  for(Face_index f : mesh.faces())
+  {
+    const Kernel::Vector_3 normal = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+    const Kernel::Vector_3& x = directions[f];
+    const Kernel::Vector_3 y = std::cos(turn) * x + std::sin(turn) * CGAL::cross_product(normal, x);
+    for(int c = 0; c < 3; ++c) { d(py::ssize_t(f), c) = x[c]; d2(py::ssize_t(f), c) = y[c]; }
+  }
+  r.singular_vertices = py::array_t<long long>({static_cast<py::ssize_t>(singular.size()), py::ssize_t(2)});
+  auto s = r.singular_vertices.mutable_unchecked<2>();
+  for(std::size_t i = 0; i < singular.size(); ++i)
+  {
+    s(py::ssize_t(i), 0) = static_cast<long long>(singular[i].first);
+    s(py::ssize_t(i), 1) = singular[i].second;
+  }
+  r.matching = face_side_jumps(mesh, rows, matching);
+  r.mismatch = py::array_t<long long>({nf, py::ssize_t(3)});
+  auto jm = r.matching.unchecked<2>();
+  auto mm = r.mismatch.mutable_unchecked<2>();
+  const long long n = o.common.degree;
+  for(py::ssize_t f = 0; f < nf; ++f)
+    for(int c = 0; c < 3; ++c) mm(f, c) = ((jm(f, c) % n) + n) % n;
+  return r;
+}
+
+const char* const face_doc =
+  "compute_face_directions(V, F, /, *, degree=4, align=None, guidance=None, lambda_t=None, alignment_weight=None,\n"
+  "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None,\n"
+  "                        intrinsic_mollification=1e-6, max_iterations=1000, tolerance=1e-10, seed=0)\n\n"
+  "The smoothest (or aligned) n-direction field on the faces of the mesh (V, F): one direction per face,\n"
+  "singularities at vertices, the principal matching per edge (user manual, 'Fields on Faces'). guidance is\n"
+  "(|F|, 3), constraints a pair (face ids, directions). Returns a FaceField: face_directions and pd2 (|F|, 3;\n"
+  "pd2 is the first direction turned by 2 pi / n: libigl's PD1 and PD2 for n = 4), singular_vertices (k, 2:\n"
+  "vertex, k; the index is k / n), matching (|F|, 3: the period jump across edge F[f, c] -> F[f, (c+1) % 3],\n"
+  "from f to the face across), mismatch (the same modulo n, as MIQ takes it), and the report.";
+
+void bind_face_field(py::module_& m)
+{
+  py::class_<Face_field_result>(m, "FaceField", "A field on faces: arrays and the report of one computation.")
+    .def_readonly("face_directions", &Face_field_result::face_directions, "(|F|, 3) unit direction per face")
+    .def_readonly("pd2", &Face_field_result::pd2, "(|F|, 3) the direction turned by 2 pi / n about the face normal")
+    .def_readonly("singular_vertices", &Face_field_result::singular_vertices, "(k, 2) int64: vertex, k")
+    .def_readonly("matching", &Face_field_result::matching, "(|F|, 3) int64 period jump per face edge")
+    .def_readonly("mismatch", &Face_field_result::mismatch, "(|F|, 3) int64 matching modulo n")
+    .def_property_readonly("degree", [](const Face_field_result& r) { return r.report.degree; })
+    .def_property_readonly("index_sum", [](const Face_field_result& r) { return r.report.index_sum; })
+    .def_property_readonly("converged", [](const Face_field_result& r) { return r.report.converged; })
+    .def_property_readonly("eigenvalues", [](const Face_field_result& r) {
+      std::vector<double> values;
+      for(const auto& c : r.report.components) values.push_back(c.eigenvalue);
+      return values;
+    })
+    .def_property_readonly("boundary_indices", [](const Face_field_result& r) {
+      std::vector<long long> values;
+      for(const auto& c : r.report.components) values.push_back(c.boundary_index);
+      return values;
+    })
+    .def_property_readonly("euler_characteristics", [](const Face_field_result& r) {
+      std::vector<int> values;
+      for(const auto& c : r.report.components) values.push_back(c.euler_characteristic);
+      return values;
+    })
+    .def("__repr__", [](const Face_field_result& r) {
+      return "<FaceField n=" + std::to_string(r.report.degree) + ", " + std::to_string(r.face_directions.shape(0)) +
+             " faces, " + std::to_string(r.singular_vertices.shape(0)) + " singular vertices>";
+    });
+  m.def("compute_face_directions",
+        [](const py::object& V, const py::object& F, const py::kwargs& kw) { return compute_face_directions(V, F, kw); },
+        py::arg("V"), py::arg("F"), face_doc);
+}
+
+}  // namespace
+
+#endif

@@ -1,0 +1,274 @@
+// Fields on faces (user manual, section "Fields on Faces"): the closed form of
+// the smallest eigenvalue on the sphere, discrete Poincare-Hopf at the vertices
+// on every component (with the boundary's contribution), the matching closing
+// up to the vertex indices, invariance under the numbering of the corners,
+// constraints, features and the refusals.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh_direction_fields.h>
+
+#include "generated_meshes.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+typedef Mesh::Edge_index Edge_index;
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace params = CGAL::parameters;
+
+namespace {
+
+Test_report report("test_face_fields");
+
+struct Face_field
+{
+  SMDF::Face_direction_field_result result;
+  std::vector<std::pair<Vertex_index, int> > singular;
+  std::map<Edge_index, int> matching;
+  std::vector<Vector_3> directions;  // by face index
+};
+
+template <typename NP>
+Face_field face_field(const Mesh& mesh, const NP& np)
+{
+  Face_field field;
+  // add_property_map() hands back the map if it exists
+  auto direction_map = const_cast<Mesh&>(mesh).add_property_map<Face_index, Vector_3>("f:test_direction").first;
+  auto matching = const_cast<Mesh&>(mesh).add_property_map<Edge_index, int>("e:test_matching", -99).first;
+  field.result = SMDF::compute_globally_optimal_face_directions(
+    mesh, direction_map, np.singularities_output_iterator(std::back_inserter(field.singular)).edge_matching_map(matching));
+  for(Edge_index e : edges(mesh)) field.matching[e] = matching[e];
+  for(Face_index f : faces(mesh)) field.directions.push_back(direction_map[f]);
+  const_cast<Mesh&>(mesh).remove_property_map(matching);
+  return field;
+}
+
+// The jumps around an interior vertex, clockwise (halfedges_around_target), add up to its index k modulo n.
+void check_matching_closes(const Mesh& mesh, const Face_field& field, int n, const std::string& what)
+{
+  std::map<Vertex_index, int> index;
+  for(const auto& vk : field.singular) index[vk.first] = vk.second;
+  int failures = 0;
+  for(Vertex_index v : vertices(mesh))
+  {
+    if(mesh.is_border(v) || mesh.is_isolated(v)) continue;
+    long long sum = 0;
+    for(auto h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
+    {
+      const auto crossed = mesh.next(h);  // from face(h) clockwise to the face across it
+      // (the edge as edges() lists it: Surface_mesh's edge(h) remembers h as its halfedge)
+      const Edge_index e(static_cast<Mesh::size_type>(crossed.idx() / 2));
+      sum += (mesh.halfedge(e) == crossed) ? field.matching.at(e) : -field.matching.at(e);
+    }
+    const int k = index.count(v) ? index[v] : 0;
+    if(((sum - k) % n + n) % n != 0)
+    {
+      if(failures < 3) std::cout << "  vertex " << v.idx() << ": k = " << k << ", clockwise jumps add up to " << sum << "\n";
+      ++failures;
+    }
+  }
+  report.check(failures == 0, what + ": the matching around " + std::to_string(failures) +
+                                " vertices does not close to their index modulo n");
+}
+
+void check_poincare_hopf(const Face_field& field, int n, const std::string& what)
+{
+  long long sum = 0;
+  for(const auto& vk : field.singular) sum += vk.second;
+  report.check(sum == field.result.index_sum, what + ": the listed singularities add up to index_sum");
+  for(std::size_t c = 0; c < field.result.components.size(); ++c)
+  {
+    const SMDF::Face_field_component_report& r = field.result.components[c];
+    report.check(r.index_sum + r.boundary_index == static_cast<long long>(n) * r.euler_characteristic,
+                 what + ": component " + std::to_string(c) + " index sum " + std::to_string(r.index_sum) +
+                   " + boundary " + std::to_string(r.boundary_index) + " != n chi = " +
+                   std::to_string(n * r.euler_characteristic));
+    if(r.is_closed) report.check(r.boundary_index == 0, what + ": a closed component has no boundary contribution");
+  }
+}
+
+// Unit, tangent to each face.
+void check_directions(const Mesh& mesh, const Face_field& field, const std::string& what)
+{
+  int bad = 0;
+  for(Face_index f : faces(mesh))
+  {
+    const auto h = mesh.halfedge(f);
+    const Vector_3 normal = CGAL::cross_product(mesh.point(mesh.target(h)) - mesh.point(mesh.source(h)),
+                                                mesh.point(mesh.target(mesh.next(h))) - mesh.point(mesh.source(h)));
+    const Vector_3& d = field.directions[f.idx()];
+    if(!(std::abs(d.squared_length() - 1.) < 1e-12) ||
+       !(std::abs(d * normal) < 1e-9 * std::sqrt(normal.squared_length())))
+      ++bad;
+  }
+  report.check(bad == 0, what + ": " + std::to_string(bad) + " face directions are not unit tangent vectors");
+}
+
+// The smallest eigenvalue of the Dirichlet energy of degree n on the unit sphere is n (the vertex
+// field's closed form n (1 - s) at s = 0): it pins the sign and conjugation of the transport.
+void check_sphere()
+{
+  Mesh sphere;
+  make_icosphere(sphere, 4);
+  for(int n : {1, 2, 4})
+  {
+    const Face_field field = face_field(sphere, params::degree(n));
+    const double lambda = field.result.components[0].eigenvalue;
+    report.check(std::abs(lambda - n) < 0.02 * n, "sphere, n = " + std::to_string(n) + ": lambda_1 = " +
+                                                     std::to_string(lambda) + ", expected about " + std::to_string(n));
+    report.check(field.result.index_sum == 2 * n, "sphere: the vertex indices add up to 2n");
+    check_poincare_hopf(field, n, "sphere n = " + std::to_string(n));
+    check_matching_closes(sphere, field, n, "sphere n = " + std::to_string(n));
+    check_directions(sphere, field, "sphere");
+  }
+}
+
+// Genus 1 and a surface with boundary; an aligned field with features.
+void check_torus_and_disk()
+{
+  Mesh torus;
+  make_torus(torus, 3., 1., 48, 20);
+  const Face_field smooth = face_field(torus, params::degree(4));
+  report.check(smooth.result.index_sum == 0 && smooth.result.components[0].euler_characteristic == 0,
+               "torus: index sum 0");
+  check_matching_closes(torus, smooth, 4, "torus");
+  const Face_field curved = face_field(torus, params::degree(4).principal_curvature_alignment(
+                                                SMDF::Principal_curvature_alignment::MAXIMUM));
+  report.check(curved.result.number_of_singular_vertices == 0,
+               "torus: the curvature-aligned cross field has no singularity (got " +
+                 std::to_string(curved.result.number_of_singular_vertices) + ")");
+  // on the torus of revolution the maximum curvature runs around the tube: along the meridians
+  int off_meridian = 0;
+  for(Face_index f : faces(torus))
+  {
+    Point_3 centre(0, 0, 0);
+    Vector_3 sum(0, 0, 0);
+    for(auto v : CGAL::vertices_around_face(torus.halfedge(f), torus)) sum = sum + (torus.point(v) - centre);
+    const Vector_3 around_axis(-sum.y(), sum.x(), 0.);
+    const Vector_3& d = curved.directions[f.idx()];
+    const double c = std::abs(d * around_axis) / std::sqrt(around_axis.squared_length());
+    if(!(c < 0.1 || c > 0.995)) ++off_meridian;  // a cross: along or across the parallels
+  }
+  report.check(off_meridian == 0, "torus: " + std::to_string(off_meridian) +
+                                    " faces whose cross is not along the principal directions");
+
+  Mesh disk;
+  make_disk(disk, 12);
+  const Face_field flat = face_field(disk, params::degree(4));
+  report.check(flat.result.number_of_singular_vertices == 0, "flat disk: no singular vertex");
+  report.check(flat.result.components[0].boundary_index == 4, "flat disk: the boundary contributes n chi = 4");
+  report.check(std::abs(flat.result.components[0].eigenvalue) < 1e-8, "flat disk: lambda_1 = 0");
+  check_poincare_hopf(flat, 4, "flat disk");
+  const Face_field along = face_field(disk, params::degree(4).boundary_alignment(SMDF::Boundary_alignment::TANGENT));
+  check_poincare_hopf(along, 4, "disk along the boundary");
+  report.check(along.result.index_sum == 4, "disk along the boundary: interior indices add up to n chi (got " +
+                                              std::to_string(along.result.index_sum) + ")");
+}
+
+// The numbering of each face's corners (which side is its frame's axis) changes nothing.
+void check_corner_numbering_invariance()
+{
+  Mesh a;
+  make_lumpy_sphere(a, 3);
+  Mesh b = a;
+  for(Face_index f : faces(b)) b.set_halfedge(f, b.next(b.halfedge(f)));
+  const auto np = params::degree(4).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM);
+  const Face_field fa = face_field(a, np), fb = face_field(b, np);
+  report.check(fa.singular == fb.singular, "corner numbering: the same singular vertices and indices");
+  double worst = 0.;
+  for(std::size_t f = 0; f < fa.directions.size(); ++f)
+  {
+    // a cross: compare the fourth powers of the directions in a frame of the face (via dot and cross)
+    const Vector_3& x = fa.directions[f];
+    const Vector_3& y = fb.directions[f];
+    const double cos4 = std::cos(4. * std::atan2(std::sqrt(CGAL::cross_product(x, y).squared_length()), x * y));
+    worst = (std::max)(worst, 1. - cos4);
+  }
+  report.check(worst < 1e-8, "corner numbering: the same crosses (worst 1 - cos 4a = " + std::to_string(worst) + ")");
+}
+
+void check_constraints_and_refusals()
+{
+  Mesh sphere;
+  make_icosphere(sphere, 3);
+  auto constrained = sphere.add_property_map<Face_index, bool>("f:c", false).first;
+  auto wanted = sphere.add_property_map<Face_index, Vector_3>("f:w", Vector_3(0, 0, 0)).first;
+  const Face_index f0(0);
+  constrained[f0] = true;
+  const auto h = sphere.halfedge(f0);
+  wanted[f0] = sphere.point(sphere.target(h)) - sphere.point(sphere.source(h));
+  const Face_field field =
+    face_field(sphere, params::degree(1).face_is_constrained_map(constrained).face_constrained_direction_map(wanted));
+  const Vector_3 w = wanted[f0] / std::sqrt(wanted[f0].squared_length());
+  report.check(std::abs(field.directions[0] * w - 1.) < 1e-12, "a constrained face keeps its direction");
+  check_poincare_hopf(field, 1, "constrained sphere");
+
+  auto refused = [&](auto call, const std::string& what) {
+    bool thrown = false;
+    try { call(); } catch(const SMDF::Invalid_input_error& e) { thrown = true; std::cout << "  refused: " << e.what() << "\n"; }
+    report.check(thrown, what + " is refused");
+  };
+  auto dirs = sphere.add_property_map<Face_index, Vector_3>("f:d").first;
+  refused([&] { SMDF::compute_globally_optimal_face_directions(sphere, dirs, params::smoothness_parameter(0.5)); },
+          "s = 0.5");
+  refused([&] { SMDF::compute_globally_optimal_face_directions(
+                  sphere, dirs, params::degree(3).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM)); },
+          "curvature alignment with n = 3");
+  auto vertex_guidance = sphere.add_property_map<Vertex_index, Vector_3>("v:g", Vector_3(1, 0, 0)).first;
+  refused([&] { SMDF::compute_globally_optimal_face_directions(sphere, dirs, params::vertex_guidance_map(vertex_guidance)); },
+          "a vertex guidance map");
+  refused([&] { SMDF::compute_globally_optimal_face_directions(sphere, dirs, params::degree(0)); }, "n = 0");
+}
+
+// Sharp features on a box-like closed cylinder: the crosses of the faces at a rim follow the rim.
+void check_features()
+{
+  Mesh cylinder;
+  make_capped_cylinder(cylinder, 1., 2., 32, 8);
+  auto is_feature = cylinder.add_property_map<Edge_index, bool>("e:f", false).first;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(cylinder, 60., is_feature);
+  std::size_t features = 0;
+  for(Edge_index e : edges(cylinder)) features += is_feature[e];
+  report.check(features == 64, "cylinder: 64 rim edges detected");
+  const Face_field field = face_field(cylinder, params::degree(4).edge_is_feature_map(is_feature));
+  check_poincare_hopf(field, 4, "cylinder with features");
+  int off = 0;
+  for(Edge_index e : edges(cylinder))
+  {
+    if(!is_feature[e]) continue;
+    const auto h = cylinder.halfedge(e);
+    Vector_3 along = cylinder.point(cylinder.target(h)) - cylinder.point(cylinder.source(h));
+    along = along / std::sqrt(along.squared_length());
+    for(auto g : {h, cylinder.opposite(h)})
+    {
+      const double c = std::abs(field.directions[cylinder.face(g).idx()] * along);
+      if(!(c < 1e-9 || c > 1. - 1e-9)) ++off;
+    }
+  }
+  report.check(off == 0, "cylinder: " + std::to_string(off) + " faces at a rim do not follow it");
+}
+
+} // namespace
+
+int main()
+{
+  check_sphere();
+  check_torus_and_disk();
+  check_corner_numbering_invariance();
+  check_constraints_and_refusals();
+  check_features();
+  return report.finish();
+}
