@@ -478,7 +478,7 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
               << " iterations with residual " << compact(field.result.residual) << ", above the tolerance" << std::endl;
   progress.begin("writing", timings.write);
   if(!o.mesh_out.empty()) exchange_files::write_mesh(o.mesh_out, outputs.stream(o.mesh_out), input.mesh);
-  face_field_run::write_files(o, input.mesh, field, outputs);
+  face_field_run::write_files(o, field, outputs);
   outputs.close_all_except(o.json_file);
   progress.end();
   if(!o.json_file.empty())

@@ -71,6 +71,7 @@ inline SMDF::Boundary_alignment boundary_alignment(const Options& o)
 
 struct Face_field
 {
+  std::vector<std::array<std::size_t, 2> > features;  // of --feature-angle, detected once for the field and --sharp
   SMDF::Face_direction_field_result result;
   SMDF::Direction_field_data data;
 };
@@ -84,7 +85,7 @@ Face_field compute(const Options& o, const Mesh& mesh)
   Face_field field;
   field.data = field_data(mesh, o.degree);
   std::vector<unsigned char> is_feature;
-  feature_edges(o, mesh, is_feature);
+  field.features = feature_edges(o, mesh, is_feature);
   std::vector<typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3> directions(mesh.number_of_faces());
   std::vector<int> matching(mesh.number_of_edges(), 0);
   std::vector<std::pair<Vertex_index, int> > singular;
@@ -125,8 +126,7 @@ Face_field compute(const Options& o, const Mesh& mesh)
 }
 
 // The files of a field on faces.
-template <typename Mesh>
-void write_files(const Options& o, const Mesh& mesh, const Face_field& field, Output_files& outputs)
+inline void write_files(const Options& o, const Face_field& field, Output_files& outputs)
 {
   if(!o.rosy.empty()) SMDF::IO::write_rosy(outputs.stream(o.rosy), field.data);
   if(!o.ffield.empty()) SMDF::IO::write_ffield(outputs.stream(o.ffield), field.data);
@@ -138,11 +138,7 @@ void write_files(const Options& o, const Mesh& mesh, const Face_field& field, Ou
     std::ostream& os = outputs.stream(o.singularities);
     for(const auto& vk : field.data.vertex_singularities) os << vk.first << " " << vk.second << "\n";
   }
-  if(!o.sharp.empty())
-  {
-    std::vector<unsigned char> is_feature;
-    SMDF::IO::write_sharp(outputs.stream(o.sharp), field.data, feature_edges(o, mesh, is_feature));
-  }
+  if(!o.sharp.empty()) SMDF::IO::write_sharp(outputs.stream(o.sharp), field.data, field.features);
 }
 
 // The singular vertices whose k is a multiple of n (index +-1, +-2, ...): a
