@@ -61,7 +61,12 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
   }
   Face_options o;
   const bool guided = kw.contains("guidance") && !kw["guidance"].is_none();
-  if(guided) common["guidance"] = py::array_t<double>({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
+  if(guided)  // a zero placeholder (no preference anywhere), so that the shared checks know a guidance is given
+  {
+    py::array_t<double> placeholder({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
+    std::fill(placeholder.mutable_data(), placeholder.mutable_data() + placeholder.size(), 0.);
+    common["guidance"] = placeholder;
+  }
   o.common = read_options(common, mesh);  // the shared keywords, checked as for vertex fields
   o.common.guidance.clear();
   if(guided)

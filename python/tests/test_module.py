@@ -235,6 +235,9 @@ def test_face_field_constraints_and_refusals():
         smdf.compute_face_directions(V, F, constraints=(np.array([99999]), edge[None, :]))
     with pytest.raises(ValueError, match="shape"):
         smdf.compute_face_directions(V, F, guidance=np.ones((len(V), 3)))  # one row per face
+    # a guidance per face: the field follows it (on a sphere still with the indices of n chi)
+    guided = smdf.compute_face_directions(V, F, guidance=np.tile([1.0, 0.0, 0.0], (len(F), 1)), lambda_t=-10.0)
+    assert guided.index_sum == 8
 
 
 def test_defaults_given_explicitly_change_nothing():
