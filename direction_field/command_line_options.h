@@ -82,7 +82,9 @@ inline const Option_help option_help[] = {
                                   "index 0). The field is then "
                                   "the parallel one with exactly these singular faces (s has no effect; --align, "
                                   "--guidance or one constrained direction choose its rotation). On a closed mesh "
-                                  "the k must add up to n times the Euler characteristic"},
+                                  "the k must add up to n times the Euler characteristic. With --on faces: one 'v k' per "
+                                  "singular interior vertex, numbered as --mesh-out and --singularities number them; "
+                                  "any k that satisfy Poincare-Hopf are shown, with --matching"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
                                 "follow the principal curvature directions (even n)"},
   {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
@@ -294,7 +296,7 @@ inline void check_field_location_options(const Options& o)
   const std::pair<const char*, const std::string*> vertex_outputs[] = {
     {"--directions", &o.directions}, {"--png", &o.png}, {"--vtk", &o.vtk},
     {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--singularity-list", &o.singularity_list},
-    {"--streamlines", &o.streamlines}, {"--guidance", &o.guidance}, {"--prescribe", &o.prescribe}};
+    {"--streamlines", &o.streamlines}, {"--guidance", &o.guidance}};
   for(const auto& f : vertex_outputs)
     if(!f.second->empty()) throw Usage_error(std::string(f.first) + " applies to fields on vertices, not to --on faces");
   if(o.s != 0.) throw Usage_error("--on faces has the Dirichlet energy only: --s must be 0");

@@ -135,10 +135,13 @@ bool read_integer(const std::string& token, bool signed_number, long long& value
   return true;
 }
 
-// One line 'f k' or '# loop l t' into k_of_file_face or loop_turns (other comments skipped).
+// One line 'f k' or '# loop l t' into k_of_file_face or loop_turns (other
+// comments skipped); with `on_vertices`, 'v k' lines of --on faces (no loop).
 void read_prescription_line(const std::string& line, const std::string& where, std::size_t file_faces,
-                            std::map<std::size_t, int>& k_of_file_face, std::map<std::size_t, int>& loop_turns)
+                            std::map<std::size_t, int>& k_of_file_face, std::map<std::size_t, int>& loop_turns,
+                            bool on_vertices = false)
 {
+  const std::string element = on_vertices ? "vertex" : "face";
   std::istringstream is(line);
   std::string first, second, rest;
   if(!(is >> first)) return;  // white space only
@@ -149,18 +152,40 @@ void read_prescription_line(const std::string& line, const std::string& where, s
   if(comment && !loop) return;
   if(loop) is >> first;
   is >> second;
-  long long element, k;
-  if(!read_integer(first, false, element) || !read_integer(second, true, k) || (is >> rest))
-    throw Usage_error(where + " is not 'f k' (a face and its index, two integers) or '# loop l t'");
+  long long number, k;
+  if(!read_integer(first, false, number) || !read_integer(second, true, k) || (is >> rest))
+    throw Usage_error(where + (on_vertices ? " is not 'v k' (a vertex and its index, two integers)"
+                                           : " is not 'f k' (a face and its index, two integers) or '# loop l t'"));
+  if(loop && on_vertices)
+    throw Usage_error(where + ": loop turns apply to fields on vertices (a field on faces takes the nearest turns)");
   if(k < -1000000 || k > 1000000) throw Usage_error(where + ": " + std::to_string(k) + " is out of range");
-  if(loop && !loop_turns.emplace(std::size_t(element), int(k)).second)
-    throw Usage_error(where + ": loop " + std::to_string(element) + " is listed twice");
+  if(loop && !loop_turns.emplace(std::size_t(number), int(k)).second)
+    throw Usage_error(where + ": loop " + std::to_string(number) + " is listed twice");
   if(loop) return;
-  if(static_cast<unsigned long long>(element) >= file_faces)
-    throw Usage_error(where + ": face " + std::to_string(element) + " is not a face of the mesh (it has " +
-                      std::to_string(file_faces) + ")");
-  if(!k_of_file_face.emplace(std::size_t(element), int(k)).second)
-    throw Usage_error(where + ": face " + std::to_string(element) + " is listed twice");
+  if(static_cast<unsigned long long>(number) >= file_faces)
+    throw Usage_error(where + ": " + element + " " + std::to_string(number) + " is not a " + element +
+                      " of the mesh (it has " + std::to_string(file_faces) + ")");
+  if(!k_of_file_face.emplace(std::size_t(number), int(k)).second)
+    throw Usage_error(where + ": " + element + " " + std::to_string(number) + " is listed twice");
+}
+
+// --prescribe with --on faces: 'v k' per singular vertex, numbered as
+// --mesh-out and --singularities number them (the repaired mesh's vertices).
+std::vector<std::pair<Vertex_index, int> > read_vertex_prescription(const Options& o, const Mesh& mesh)
+{
+  std::istringstream in(text_file(o.prescribe, "a prescription file"));
+  std::map<std::size_t, int> k_of_vertex, no_loops;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number)
+  {
+    if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const std::string where = "line " + std::to_string(number) + " of '" + o.prescribe + "'";
+    read_prescription_line(line, where, mesh.number_of_vertices(), k_of_vertex, no_loops, true);
+  }
+  std::vector<std::pair<Vertex_index, int> > prescription;
+  for(const auto& vk : k_of_vertex)
+    if(vk.second != 0) prescription.emplace_back(Vertex_index(static_cast<Mesh::size_type>(vk.first)), vk.second);
+  return prescription;
 }
 
 Prescription read_prescription(const Options& o, const Repaired_mesh<Mesh>& input)
@@ -466,13 +491,20 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
   progress.begin("computing the field on faces", compute_ms);
   try
   {
-    field = face_field_run::compute(o, input.mesh);
+    const std::vector<std::pair<Vertex_index, int> > prescription =
+      o.prescribe.empty() ? std::vector<std::pair<Vertex_index, int> >() : read_vertex_prescription(o, input.mesh);
+    field = face_field_run::compute(o, input.mesh, o.prescribe.empty() ? nullptr : &prescription);
   }
   catch(const SMDF::Invalid_input_error& e)
   {
     throw Usage_error(in_file_numbering(e, input));
   }
   progress.end();
+  if(field.result.number_of_non_principal_jumps > 0 && (!o.rosy.empty() || !o.ffield.empty()))
+    std::cerr << "direction_field: warning: the field turns by pi/n or more across "
+              << field.result.number_of_non_principal_jumps << " edges, where readers that recompute the matching "
+              << "from the directions (--rosy, --ffield) find other singular vertices; --matching carries it"
+              << std::endl;
   if(!field.result.converged)
     std::cerr << "direction_field: warning: the eigen-solve stopped after " << field.result.iterations
               << " iterations with residual " << compact(field.result.residual) << ", above the tolerance" << std::endl;

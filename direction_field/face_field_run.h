@@ -78,7 +78,8 @@ struct Face_field
 
 // The library call with the options' named parameters; the matching per face side.
 template <typename Mesh>
-Face_field compute(const Options& o, const Mesh& mesh)
+Face_field compute(const Options& o, const Mesh& mesh,
+                   const std::vector<std::pair<typename Mesh::Vertex_index, int> >* prescription)
 {
   typedef typename Mesh::Face_index Face_index;
   typedef typename Mesh::Vertex_index Vertex_index;
@@ -99,7 +100,10 @@ Face_field compute(const Options& o, const Mesh& mesh)
               .singularities_output_iterator(std::back_inserter(singular))
               .edge_matching_map(CGAL::make_property_map(matching));
   auto direction_map = CGAL::make_property_map(directions);
-  if(o.weight_given)
+  if(prescription)
+    field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map,
+                                                                  np.prescribed_singularities(*prescription));
+  else if(o.weight_given)
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np.alignment_weight(o.weight));
   else if(o.lambda_given)
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np.alignment_lambda(o.lambda));
@@ -170,6 +174,8 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"singular_vertices\":" << r.number_of_singular_vertices << ",\"index_sum\":" << r.index_sum
      << ",\"boundary_index\":" << boundary << ",\"mollification\":" << number(r.mollification)
      << ",\"singular_vertices_multiple_of_n\":" << hidden_modulo_n(field.data)
+     << ",\"prescribed\":" << (r.prescribed ? "true" : "false")
+     << ",\"non_principal_jumps\":" << r.number_of_non_principal_jumps
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms) << ",\"solve\":" << number(r.timings.solve_ms)
      << ",\"total\":" << number(r.timings.total_ms) << ",\"read\":" << number(timings.read)
@@ -193,6 +199,9 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
        << " (boundary " << c.boundary_index << "/" << r.degree << ", Euler characteristic " << c.euler_characteristic
        << ")\n";
   }
+  if(r.prescribed)
+    os << "prescribed      the singular vertices of " << o.prescribe << " (parallel field; "
+       << r.number_of_non_principal_jumps << " edges with a matching other than the principal one)\n";
   if(const std::size_t hidden = hidden_modulo_n(field.data))
     os << "note            " << hidden << " singular vertices have an index k that is a multiple of n: readers that "
        << "recompute the matching modulo n (QuadWild) see no singularity there\n";

@@ -20,7 +20,7 @@ struct Face_field_result
 };
 
 const char* const face_option_names[] = {"degree", "align", "boundary", "guidance", "alignment_weight", "lambda_t",
-                                         "constraints", "feature_edges", "feature_angle", "intrinsic_mollification",
+                                         "constraints", "feature_edges", "feature_angle", "prescribed", "intrinsic_mollification",
                                          "max_iterations", "tolerance", "seed"};
 
 struct Face_options
@@ -28,7 +28,25 @@ struct Face_options
   Options common;                                                   // degree, align, boundary, features, ...
   std::vector<Kernel::Vector_3> guidance;                           // per face; empty: none
   std::vector<std::pair<Face_index, Kernel::Vector_3> > constraints;  // (face, direction)
+  std::optional<std::vector<std::pair<Vertex_index, int> > > prescribed;  // (vertex, k)
 };
+
+// prescribed = k x 2 (vertex, k): index k / n at interior vertices
+void read_prescribed_vertices(const py::object& value, const Mesh& mesh, Face_options& o)
+{
+  const Index_array p = index_rows(value, 2, "prescribed");
+  const auto r = p.unchecked<2>();
+  std::vector<std::pair<Vertex_index, int> > vertices;
+  for(py::ssize_t i = 0; i < p.shape(0); ++i)
+  {
+    if(r(i, 0) < 0 || static_cast<std::size_t>(r(i, 0)) >= mesh.number_of_vertices())
+      refuse("prescribed row " + std::to_string(i) + ": vertex " + std::to_string(r(i, 0)) +
+             " is not a vertex of the mesh");
+    if(std::abs(r(i, 1)) > 1000000) refuse("prescribed row " + std::to_string(i) + ": k out of range");
+    vertices.emplace_back(Vertex_index(static_cast<Mesh::size_type>(r(i, 0))), static_cast<int>(r(i, 1)));
+  }
+  o.prescribed = std::move(vertices);
+}
 
 // constraints = (face ids, directions k x 3)
 void read_face_constraints(const py::object& value, const Mesh& mesh, Face_options& o)
@@ -57,7 +75,7 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
     const std::string key = py::cast<std::string>(item.first);
     if(std::find(std::begin(face_option_names), std::end(face_option_names), key) == std::end(face_option_names))
       throw py::type_error("unexpected keyword argument '" + key + "'");
-    if(key != "guidance" && key != "constraints") common[item.first] = item.second;
+    if(key != "guidance" && key != "constraints" && key != "prescribed") common[item.first] = item.second;
   }
   Face_options o;
   const bool guided = kw.contains("guidance") && !kw["guidance"].is_none();
@@ -76,6 +94,12 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
     for(py::ssize_t i = 0; i < g.shape(0); ++i) o.guidance.emplace_back(r(i, 0), r(i, 1), r(i, 2));
   }
   if(kw.contains("constraints") && !kw["constraints"].is_none()) read_face_constraints(kw["constraints"], mesh, o);
+  if(kw.contains("prescribed") && !kw["prescribed"].is_none())
+  {
+    if(o.common.alignment_weight || o.common.lambda_t)
+      refuse("prescribed singularities take no lambda_t or alignment_weight");
+    read_prescribed_vertices(kw["prescribed"], mesh, o);
+  }
   return o;
 }
 
@@ -110,6 +134,7 @@ SMDF::Face_direction_field_result compute_on_faces(Mesh& mesh, const Face_option
     if(guidance.empty()) return SMDF::compute_globally_optimal_face_directions(mesh, out, np_);
     return SMDF::compute_globally_optimal_face_directions(mesh, out, np_.face_guidance_map(CGAL::make_property_map(guidance)));
   };
+  if(o.prescribed) return with_guidance(np.prescribed_singularities(*o.prescribed));
   if(o.common.alignment_weight) return with_guidance(np.alignment_weight(*o.common.alignment_weight));
   if(o.common.lambda_t) return with_guidance(np.alignment_lambda(*o.common.lambda_t));
   return with_guidance(np);
@@ -180,13 +205,17 @@ Face_field_result compute_face_directions(const py::object& V, const py::object&
 const char* const face_doc =
   "compute_face_directions(V, F, /, *, degree=4, align=None, guidance=None, lambda_t=None, alignment_weight=None,\n"
   "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None,\n"
-  "                        intrinsic_mollification=1e-6, max_iterations=1000, tolerance=1e-10, seed=0)\n\n"
+  "                        prescribed=None, intrinsic_mollification=1e-6, max_iterations=1000, tolerance=1e-10,\n"
+  "                        seed=0)\n\n"
   "The smoothest (or aligned) n-direction field on the faces of the mesh (V, F): one direction per face,\n"
   "singularities at vertices, the principal matching per edge (user manual, 'Fields on Faces'). guidance is\n"
   "(|F|, 3), constraints a pair (face ids, directions). Returns a FaceField: face_directions and pd2 (|F|, 3;\n"
   "pd2 is the first direction turned by 2 pi / n: libigl's PD1 and PD2 for n = 4), singular_vertices (k, 2:\n"
   "vertex, k; the index is k / n), matching (|F|, 3: the period jump across edge F[f, c] -> F[f, (c+1) % 3],\n"
-  "from f to the face across), mismatch (the same modulo n, as MIQ takes it), and the report.";
+  "from f to the face across), mismatch (the same modulo n, as MIQ takes it), and the report.\n"
+  "prescribed (k, 2: vertex, k) places the singularities at interior vertices instead: any indices that add up\n"
+  "to n chi on each closed component are shown exactly, the matching included (non_principal_jumps counts the\n"
+  "edges where it is not the principal one, which readers that recompute it would read differently).";
 
 void bind_face_field(py::module_& m)
 {
@@ -214,6 +243,9 @@ void bind_face_field(py::module_& m)
       for(const auto& c : r.report.components) values.push_back(c.euler_characteristic);
       return values;
     })
+    .def_property_readonly("prescribed", [](const Face_field_result& r) { return r.report.prescribed; })
+    .def_property_readonly("non_principal_jumps",
+                           [](const Face_field_result& r) { return r.report.number_of_non_principal_jumps; })
     .def("__repr__", [](const Face_field_result& r) {
       return "<FaceField n=" + std::to_string(r.report.degree) + ", " + std::to_string(r.face_directions.shape(0)) +
              " faces, " + std::to_string(r.singular_vertices.shape(0)) + " singular vertices>";

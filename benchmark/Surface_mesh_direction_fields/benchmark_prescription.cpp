@@ -11,7 +11,9 @@
 // field) against an accepted edit (the target: at most an edit's time plus
 // a local check).
 //
-//   usage: benchmark_prescription [--degree N] [--repeat R] [MESH...]
+// With --faces: the same for fields on faces (run_on_faces()).
+//
+//   usage: benchmark_prescription [--faces] [--degree N] [--repeat R] [MESH...]
 // With no mesh: nefertiti.off and nefertiti_sub4.off of ../shared/data/meshes.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -134,20 +136,83 @@ static void run(const std::string& path, int degree, int repeat)
               median(dense), median(dense) / median(edit), refusals, repeat);
 }
 
+typedef std::vector<std::pair<Mesh::Vertex_index, int> > Vertex_singularities;
+
+// An interior neighbour of v that is not singular.
+static Mesh::Vertex_index free_vertex_neighbour(const Mesh& mesh, Mesh::Vertex_index v, const Vertex_singularities& s)
+{
+  for(auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+    if(!mesh.is_border(w) && std::none_of(s.begin(), s.end(), [&](const auto& vk) { return vk.first == w; }))
+      return w;
+  return v;
+}
+
+// --faces: the same rows for fields on faces (singularities at vertices): the
+// smoothest field (free function), the first prescription of its own singular
+// vertices on a Globally_optimal_face_direction_field (construction, trees
+// and the factorization of the faces' Laplacian included), then edits.
+static void run_on_faces(const std::string& path, int degree, int repeat)
+{
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh)) { std::cerr << "cannot read " << path << "\n"; return; }
+  auto dir = mesh.add_property_map<Face_index, Kernel::Vector_3>("f:direction").first;
+  std::vector<double> smoothest, first, edit;
+  std::size_t edits_exact = 0, edits = 0;
+  for(int r = 0; r < repeat; ++r)
+  {
+    Vertex_singularities s;
+    auto start = std::chrono::steady_clock::now();
+    SMDF::compute_globally_optimal_face_directions(mesh, dir, params::degree(degree).singularities_output_iterator(std::back_inserter(s)));
+    smoothest.push_back(milliseconds_since(start));
+    start = std::chrono::steady_clock::now();
+    const SMDF::Globally_optimal_face_direction_field<Mesh> field(mesh);
+    field.compute(dir, params::degree(degree).prescribed_singularities(s));
+    first.push_back(milliseconds_since(start));
+    Vertex_singularities moved = s;
+    for(std::size_t i = 0; i < moved.size() && i < 10; ++i)
+    {
+      const Mesh::Vertex_index from = moved[i].first;
+      moved[i].first = free_vertex_neighbour(mesh, from, moved);
+      for(int back = 0; back < 2; ++back)
+      {
+        Vertex_singularities found;
+        start = std::chrono::steady_clock::now();
+        field.compute(dir, params::degree(degree).prescribed_singularities(moved)
+                             .singularities_output_iterator(std::back_inserter(found)));
+        edit.push_back(milliseconds_since(start));
+        std::sort(found.begin(), found.end());
+        Vertex_singularities wanted = moved;
+        std::sort(wanted.begin(), wanted.end());
+        edits_exact += (found == wanted);
+        ++edits;
+        moved[i].first = from;
+      }
+    }
+  }
+  std::printf("%-24s %8zu faces  on faces: smoothest %8.1f ms  first prescription %8.1f ms (%.3f)  edit %7.1f ms"
+              "  edit/smoothest %.3f  (%zu of %zu edits exact)\n",
+              path.substr(path.find_last_of('/') + 1).c_str(), static_cast<std::size_t>(mesh.number_of_faces()),
+              median(smoothest), median(first), median(first) / median(smoothest), median(edit),
+              median(edit) / median(smoothest), edits_exact, edits);
+}
+
 int main(int argc, char** argv)
 {
   int degree = 4, repeat = 3;
+  bool on_faces = false;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(a == "--degree" && i + 1 < argc) degree = std::stoi(argv[++i]);
     else if(a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
+    else if(a == "--faces") on_faces = true;
     else meshes.push_back(a);
   }
   if(meshes.empty())
     for(const char* name : {"nefertiti.off", "nefertiti_sub4.off"})
       meshes.push_back(std::string(SMDF_SHARED_MESH_DIR) + "/" + name);
-  for(const std::string& m : meshes) run(m, degree, repeat);
+  for(const std::string& m : meshes)
+    on_faces ? run_on_faces(m, degree, repeat) : run(m, degree, repeat);
   return 0;
 }

@@ -216,6 +216,32 @@ def hostile_cases():
               "%s: no output file" % " ".join(extra))
 
 
+def prescription_case(m):
+    """The smoothest field's own singular vertices plus an opposite pair (+1, -1) at the two ends of an edge
+    between free interior vertices, prescribed: the field on faces has exactly those, and vcglib reads them."""
+    name = m[:-4] + "_prescribed"
+    prefix = os.path.join(OUT, name)
+    r = subprocess.run([BIN, os.path.join(SHARED, m), "--on", "faces", "--singularities", prefix + ".own",
+                        "--mesh-out", prefix + ".own.obj"], capture_output=True, text=True,
+                       env=dict(os.environ, OPENBLAS_NUM_THREADS="1"))
+    if not check(r.returncode == 0, "%s: %s" % (name, r.stderr.strip())):
+        return
+    asked = dict(tuple(map(int, line.split())) for line in open(prefix + ".own").read().splitlines())
+    points, faces = read_obj(prefix + ".own.obj")
+    sides = sides_of_edges(faces)
+    border = {v for edge, fs in sides.items() if len(fs) == 1 for v in edge}
+    pair = next(edge for edge, fs in sorted(sides.items()) if len(fs) == 2 and not (set(edge) & border)
+                and not (set(edge) & set(asked)))
+    asked[pair[0]], asked[pair[1]] = 1, -1
+    with open(prefix + ".asked", "w") as f:
+        f.write("".join("%d %d\n" % vk for vk in sorted(asked.items())))
+    run_case(name, os.path.join(SHARED, m), ["--prescribe", prefix + ".asked"])
+    t = open(prefix + ".sing").read().split()  # n, the count, then vertex k
+    got = {int(t[i]): int(t[i + 1]) for i in range(2, len(t), 2)}
+    check(got == asked, "%s: the singular vertices are the prescribed ones (%d of %d)" %
+          (name, len(set(got.items()) & set(asked.items())), len(asked)))
+
+
 hostile_cases()
 meshes = sorted(f for f in os.listdir(SHARED) if f.endswith(".off"))
 for m in meshes:
@@ -224,4 +250,7 @@ for m, extra in [("cow", ["--align", "curvature", "--feature-angle", "35"]), ("f
                  ("fertility", ["--align", "curvature"]), ("plane_holes", ["--constrain-boundary", "tangent"])]:
     if m + ".off" in meshes:
         run_case(m + "_" + extra[1].replace("-", "_"), os.path.join(SHARED, m + ".off"), extra)
+for m in ["camelhead.off", "cow.off", "fertility.off", "plane_holes.off", "torus_oded.off"]:
+    if m in meshes:
+        prescription_case(m)
 check.finish()

@@ -80,44 +80,22 @@ class FaceField:
     def boundary_indices(self) -> List[int]: ...
     @property
     def euler_characteristics(self) -> List[int]: ...
+    @property
+    def prescribed(self) -> bool: ...
+    @property
+    def non_principal_jumps(self) -> int: ...
 
 def compute_face_directions(
     V: npt.ArrayLike, F: npt.ArrayLike, /, *, degree: int = 4, align: Optional[str] = None,
     guidance: Optional[npt.ArrayLike] = None, lambda_t: Optional[float] = None,
     alignment_weight: Optional[float] = None, constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
     boundary: Optional[str] = None, feature_edges: Optional[npt.ArrayLike] = None,
-    feature_angle: Optional[float] = None, intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
+    feature_angle: Optional[float] = None, prescribed: Optional[npt.ArrayLike] = None,
+    intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
     tolerance: float = 1e-10, seed: int = 0) -> FaceField: ...
 
 @overload
 def read_mesh(path: Path, *, with_maps: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int]]: ...
-class FaceField:
-    face_directions: npt.NDArray[np.float64]    # (|F|, 3) unit direction per face (libigl's PD1)
-    pd2: npt.NDArray[np.float64]                # (|F|, 3) turned by 2 pi / n about the face normal
-    singular_vertices: npt.NDArray[np.int64]    # (k, 2): vertex, k (index k / n)
-    matching: npt.NDArray[np.int64]             # (|F|, 3): period jump across edge F[f, c] -> F[f, (c+1) % 3]
-    mismatch: npt.NDArray[np.int64]             # (|F|, 3): the same modulo n
-    @property
-    def degree(self) -> int: ...
-    @property
-    def index_sum(self) -> int: ...
-    @property
-    def converged(self) -> bool: ...
-    @property
-    def eigenvalues(self) -> List[float]: ...
-    @property
-    def boundary_indices(self) -> List[int]: ...
-    @property
-    def euler_characteristics(self) -> List[int]: ...
-
-def compute_face_directions(
-    V: npt.ArrayLike, F: npt.ArrayLike, /, *, degree: int = 4, align: Optional[str] = None,
-    guidance: Optional[npt.ArrayLike] = None, lambda_t: Optional[float] = None,
-    alignment_weight: Optional[float] = None, constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
-    boundary: Optional[str] = None, feature_edges: Optional[npt.ArrayLike] = None,
-    feature_angle: Optional[float] = None, intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
-    tolerance: float = 1e-10, seed: int = 0) -> FaceField: ...
-
 @overload
 def read_mesh(path: Path, *, with_maps: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int],
                                                               Dict[str, npt.NDArray[np.int64]]]: ...

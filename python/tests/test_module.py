@@ -201,15 +201,19 @@ def test_face_field_on_a_sphere():
         assert np.allclose(np.linalg.norm(d, axis=1), 1) and np.abs((d * normals).sum(axis=1)).max() < 1e-9
     assert np.abs((r.face_directions * r.pd2).sum(axis=1)).max() < 1e-9  # n = 4: a quarter turn
     assert np.array_equal(r.mismatch, r.matching % 4)
+    assert matching_closes(r, V, F, 4)
+
+
+def matching_closes(r, V, F, n):
+    """Around every vertex the jumps of the matching add up to minus its index, modulo n."""
     # counter-clockwise around vertex F[f, c+1], edge c of f leads from f to the face across: sum the jumps
     turns = np.zeros(len(V), dtype=np.int64)
     for f in range(len(F)):
         for c in range(3):
             turns[F[f, (c + 1) % 3]] += r.matching[f, c]
-    # each interior edge was counted from both faces: the jumps of one direction are those of the other, negated
     index = np.zeros(len(V), dtype=np.int64)
     index[r.singular_vertices[:, 0]] = r.singular_vertices[:, 1]
-    assert np.all((turns + index) % 4 == 0)
+    return bool(np.all((turns + index) % n == 0))
 
 
 def test_face_field_program_and_module_agree(shared, program, tmp_path):
@@ -238,6 +242,29 @@ def test_face_field_constraints_and_refusals():
     # a guidance per face: the field follows it (on a sphere still with the indices of n chi)
     guided = smdf.compute_face_directions(V, F, guidance=np.tile([1.0, 0.0, 0.0], (len(F), 1)), lambda_t=-10.0)
     assert guided.index_sum == 8
+
+
+def test_face_field_prescribed_vertices():
+    """Singularities placed at vertices come back exactly, an opposite pair at the ends of one edge included."""
+    V, F = refined_octahedron_arrays(3)
+    smooth = smdf.compute_face_directions(V, F, degree=4)
+    back = smdf.compute_face_directions(V, F, degree=4, prescribed=smooth.singular_vertices)
+    assert back.prescribed and not smooth.prescribed
+    assert np.array_equal(np.sort(back.singular_vertices, axis=0), np.sort(smooth.singular_vertices, axis=0))
+    singular = set(smooth.singular_vertices[:, 0].tolist())
+    a, b = next((a, b) for a, b in zip(F[:, 0], F[:, 1]) if a not in singular and b not in singular)
+    for k in (1, 12):  # 12: more than a half turn across the edge, so not the principal matching
+        asked = np.vstack([smooth.singular_vertices, [[a, k], [b, -k]]])
+        r = smdf.compute_face_directions(V, F, degree=4, prescribed=asked)
+        assert np.array_equal(np.sort(r.singular_vertices, axis=0), np.sort(asked, axis=0))
+        assert (r.non_principal_jumps > 0) == (k == 12)
+        assert matching_closes(r, V, F, 4)
+    with pytest.raises(smdf.InvalidInputError, match="Poincare-Hopf"):
+        smdf.compute_face_directions(V, F, degree=4, prescribed=[[0, 1]])
+    with pytest.raises(ValueError, match="vertex 99999"):
+        smdf.compute_face_directions(V, F, degree=4, prescribed=[[99999, 8]])
+    with pytest.raises(ValueError, match="lambda_t"):
+        smdf.compute_face_directions(V, F, degree=4, prescribed=smooth.singular_vertices, lambda_t=-1.0)
 
 
 def test_defaults_given_explicitly_change_nothing():

@@ -261,6 +261,145 @@ void check_features()
   report.check(off == 0, "cylinder: " + std::to_string(off) + " faces at a rim do not follow it");
 }
 
+// Prescribed singularities at vertices: the field shows exactly the indices asked for.
+typedef std::vector<std::pair<Vertex_index, int> > Vertex_indices;
+
+Face_field prescribed_field(const Mesh& mesh, int n, const Vertex_indices& k)
+{
+  return face_field(mesh, params::degree(n).prescribed_singularities(k));
+}
+
+void check_shows(const Mesh& mesh, int n, const Vertex_indices& k, const std::string& what,
+                 bool principal = true)
+{
+  const Face_field field = prescribed_field(mesh, n, k);
+  std::map<Vertex_index, int> asked(k.begin(), k.end()), got(field.singular.begin(), field.singular.end());
+  for(auto it = asked.begin(); it != asked.end();) it = it->second == 0 ? asked.erase(it) : std::next(it);
+  report.check(asked == got, what + ": the singular vertices are the prescribed ones (" +
+                               std::to_string(got.size()) + " found, " + std::to_string(asked.size()) + " asked)");
+  report.check(field.result.prescribed, what + ": the result says prescribed");
+  if(principal)
+    report.check(field.result.number_of_non_principal_jumps == 0,
+                 what + ": principal matching (" + std::to_string(field.result.number_of_non_principal_jumps) +
+                   " other jumps)");
+  check_matching_closes(mesh, field, n, what);
+  check_poincare_hopf(field, n, what);
+  check_directions(mesh, field, what);
+}
+
+// Two vertices joined by an edge, neither singular in `field`.
+std::pair<Vertex_index, Vertex_index> free_neighbours(const Mesh& mesh, const Face_field& field)
+{
+  std::map<Vertex_index, int> singular(field.singular.begin(), field.singular.end());
+  for(Edge_index e : edges(mesh))
+  {
+    const Vertex_index a = mesh.vertex(e, 0), b = mesh.vertex(e, 1);
+    if(!mesh.is_border(a) && !mesh.is_border(b) && !singular.count(a) && !singular.count(b)) return {a, b};
+  }
+  return {Vertex_index(), Vertex_index()};
+}
+
+void check_prescriptions()
+{
+  Mesh sphere;
+  make_icosphere(sphere, 3);
+  for(int n : {1, 2, 4, 6})
+  {
+    const Face_field smooth = face_field(sphere, params::degree(n));
+    const std::string name = "sphere n = " + std::to_string(n);
+    check_shows(sphere, n, smooth.singular, name + ", its own singularities");
+    // each singularity moved to a neighbouring vertex that has none
+    Vertex_indices moved = smooth.singular;
+    std::map<Vertex_index, int> taken(moved.begin(), moved.end());
+    for(auto& vk : moved)
+      for(auto w : CGAL::vertices_around_target(sphere.halfedge(vk.first), sphere))
+        if(!taken.count(w))
+        {
+          taken.erase(vk.first);
+          vk.first = w;
+          taken[w] = vk.second;
+          break;
+        }
+    check_shows(sphere, n, moved, name + ", moved to neighbours");
+    // an opposite pair at the two ends of one edge, on top of the smoothest singularities
+    const auto ab = free_neighbours(sphere, smooth);
+    Vertex_indices pair = smooth.singular;
+    pair.emplace_back(ab.first, 1);
+    pair.emplace_back(ab.second, -1);
+    check_shows(sphere, n, pair, name + ", an opposite pair side by side");
+    // all of the index on one vertex, and a pair the principal matching cannot read
+    check_shows(sphere, n, {{Vertex_index(0), 2 * n}}, name + ", all of the index at one vertex", false);
+    Vertex_indices strong = smooth.singular;
+    strong.emplace_back(ab.first, 3 * n);
+    strong.emplace_back(ab.second, -3 * n);
+    const Face_field field = prescribed_field(sphere, n, strong);
+    report.check(field.result.number_of_non_principal_jumps > 0,
+                 name + ": indices +-3n side by side need jumps the principal matching does not read");
+    check_shows(sphere, n, strong, name + ", indices +-3n side by side", false);
+  }
+  // the class keeps its trees and factorization between prescriptions: the same fields as the free function
+  {
+    const SMDF::Globally_optimal_face_direction_field<Mesh> object(sphere);
+    auto kept = sphere.add_property_map<Face_index, Vector_3>("f:kept").first;
+    const Face_field smooth = face_field(sphere, params::degree(4));
+    Vertex_indices edited = smooth.singular;
+    double worst = 0.;
+    for(int round = 0; round < 3; ++round)
+    {
+      std::map<Vertex_index, int> taken(edited.begin(), edited.end());
+      Mesh::size_type next = edited.front().first.idx();
+      while(taken.count(Vertex_index(++next))) {}
+      edited.front().first = Vertex_index(next);
+      for(int n : {4, 2})
+      {
+        Vertex_indices asked = edited;
+        if(n == 2) asked = {{Vertex_index(0), 4}};
+        const SMDF::Face_direction_field_result r =
+          object.compute(kept, params::degree(n).prescribed_singularities(asked));
+        const Face_field once = prescribed_field(sphere, n, asked);
+        report.check(r.number_of_singular_vertices == once.result.number_of_singular_vertices,
+                     "the class and the free function: the same singular vertices");
+        for(Face_index f : faces(sphere))
+          worst = (std::max)(worst, std::sqrt((kept[f] - once.directions[f.idx()]).squared_length()));
+      }
+    }
+    report.check(worst == 0., "the class's kept factorization gives the free function's directions (worst " +
+                                std::to_string(worst) + ")");
+  }
+  Mesh torus;
+  make_torus(torus, 3., 1., 24, 12);
+  check_shows(torus, 4, {}, "torus, no singularity");
+  check_shows(torus, 4, {{Vertex_index(0), 1}, {Vertex_index(150), -1}}, "torus, a pair");
+  Mesh disk;
+  make_disk(disk, 8);
+  check_shows(disk, 4, {{Vertex_index(0), 1}}, "disk, one singularity");
+  check_shows(disk, 4, {{Vertex_index(0), -2}, {Vertex_index(1), 1}}, "disk, two singularities");
+
+  auto dirs = sphere.add_property_map<Face_index, Vector_3>("f:prescribed").first;
+  auto refused = [&](const Mesh& mesh, const Vertex_indices& k, const std::string& what) {
+    bool thrown = false;
+    try { SMDF::compute_globally_optimal_face_directions(mesh, dirs, params::degree(4).prescribed_singularities(k)); }
+    catch(const SMDF::Invalid_input_error& e) { thrown = true; std::cout << "  refused: " << e.what() << "\n"; }
+    report.check(thrown, what + " is refused");
+  };
+  refused(sphere, {{Vertex_index(0), 4}}, "a prescription against Poincare-Hopf");
+  refused(sphere, {{Vertex_index(0), 4}, {Vertex_index(0), 4}}, "a vertex listed twice");
+  refused(sphere, {{Vertex_index(static_cast<Mesh::size_type>(num_vertices(sphere))), 8}}, "a vertex out of range");
+  Vertex_index border;
+  for(Vertex_index v : vertices(disk)) if(disk.is_border(v)) border = v;
+  auto disk_dirs = disk.add_property_map<Face_index, Vector_3>("f:prescribed").first;
+  bool thrown = false;
+  try { SMDF::compute_globally_optimal_face_directions(disk, disk_dirs, params::degree(4).prescribed_singularities(
+          Vertex_indices{{border, 1}})); }
+  catch(const SMDF::Invalid_input_error& e) { thrown = true; std::cout << "  refused: " << e.what() << "\n"; }
+  report.check(thrown, "a singularity on the boundary is refused");
+  thrown = false;
+  try { SMDF::compute_globally_optimal_face_directions(sphere, dirs, params::degree(1).alignment_lambda(-1.)
+          .prescribed_singularities(Vertex_indices{{Vertex_index(0), 2}})); }
+  catch(const SMDF::Invalid_input_error& e) { thrown = true; std::cout << "  refused: " << e.what() << "\n"; }
+  report.check(thrown, "alignment_lambda with a prescription is refused");
+}
+
 } // namespace
 
 int main()
@@ -270,5 +409,6 @@ int main()
   check_corner_numbering_invariance();
   check_constraints_and_refusals();
   check_features();
+  check_prescriptions();
   return report.finish();
 }

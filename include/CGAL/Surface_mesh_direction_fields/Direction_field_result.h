@@ -205,6 +205,14 @@ struct Face_direction_field_result
   bool converged = true;
   /// the length added to every edge by the intrinsic mollification (0 if the mesh needed none)
   double mollification = 0.;
+  /// `true` if the singularities were prescribed (named parameter `prescribed_singularities`)
+  bool prescribed = false;
+  /// number of interior edges across which the matching is not the principal one: the field turns there by
+  /// \f$ \pi / n \f$ or more between the two faces (only a prescription asks that, e.g. two opposite
+  /// singularities at the ends of one edge). A consumer that recomputes the matching from the directions
+  /// (QuadWild's `.rosy`) reads other singular vertices; `edge_matching_map` and Directional's `.matching`
+  /// carry it. 0 for the smoothest and aligned fields
+  std::size_t number_of_non_principal_jumps = 0;
   /// wall-clock times
   Direction_field_timings timings;
 };

@@ -229,7 +229,8 @@ public:
     if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
     {
       request.prescribed = true;
-      request.prescribed_index = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities));
+      request.prescribed_index = internal::prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
+                                                               m_face_of_index.size(), m_index_of_face, "face");
       if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
         for(const auto& entry : get_parameter(np, internal_np::prescribed_loop_turns))
           request.loop_turns.emplace_back(static_cast<std::size_t>(entry.first), static_cast<long>(entry.second));
@@ -244,14 +245,7 @@ public:
 
     // A solver given as a named parameter is used for this call only, without reuse.
     internal::Field_answer answer;
-    Direction_field_result result;
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::sparse_linear_solver_t>::value)
-    {
-      const SparseSolver solver = get_parameter(np, internal_np::sparse_linear_solver);
-      result = m_engine->compute(request, &solver, answer);
-    }
-    else
-      result = m_engine->compute(request, nullptr, answer);
+    Direction_field_result result = internal::compute_with_solver<SparseSolver>(np, *m_engine, request, answer);
 
     auto out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
                                 CGAL::Emptyset_iterator());
@@ -310,26 +304,6 @@ private:
     halfedge_descriptor h = halfedge(m_face_of_index[internal::Indexed_mesh::face_of_corner(ci)], *m_tmesh);
     for(std::size_t c = 0; c < ci % 3; ++c) h = next(h, *m_tmesh);
     return h;
-  }
-
-  // k per face from the user's range of (face, k); a face out of range or
-  // listed twice is an error.
-  template <typename Range>
-  std::vector<int> prescribed_indices(const Range& prescription) const
-  {
-    std::vector<int> k(m_face_of_index.size(), 0);
-    std::vector<unsigned char> listed(k.size(), 0);
-    for(const auto& entry : prescription)
-    {
-      const std::size_t f = m_index_of_face(entry.first);
-      if(f >= k.size())
-        throw Invalid_input_error("prescribed_singularities names face " + std::to_string(f) + ", but the mesh has " +
-                                  std::to_string(k.size()) + " faces");
-      if(listed[f]++)
-        throw Invalid_input_error("prescribed_singularities lists face " + std::to_string(f) + " twice");
-      k[f] = static_cast<int>(entry.second);
-    }
-    return k;
   }
 
   // The unit 3D direction of every vertex into the user's map, sequentially

@@ -15,9 +15,10 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
+// the method on the dual mesh behind one seam, as for vertex fields
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine.h>
-#if defined(CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD)
-#  include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION
+#  include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine_impl.h>
 #endif
 
 #include <CGAL/boost/graph/helpers.h>
@@ -26,6 +27,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,10 +83,13 @@ Face_field_request face_field_request(const TriangleMesh& tm, const NamedParamet
     throw Invalid_input_error("a field on faces has the Dirichlet energy only: the smoothness parameter s must be 0 "
                               "(user manual, section \"Fields on Faces\")");
   if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value ||
-               !is_default_parameter<NamedParameters, internal_np::vertex_is_constrained_t>::value ||
-               !is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
-    throw Invalid_input_error("vertex_guidance_map, vertex_is_constrained_map and prescribed_singularities apply to "
-                              "fields on vertices; a field on faces takes face_guidance_map and face_is_constrained_map");
+               !is_default_parameter<NamedParameters, internal_np::vertex_is_constrained_t>::value)
+    throw Invalid_input_error("vertex_guidance_map and vertex_is_constrained_map apply to fields on vertices; a field "
+                              "on faces takes face_guidance_map and face_is_constrained_map");
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
+    throw Invalid_input_error("prescribed_loop_turns applies to fields on vertices: a field on faces with "
+                              "prescribed_singularities turns along each loop by the multiple of 2 pi / n nearest the "
+                              "surface's own");
   read_constraint_request(tm, np, std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>(),
                           index_of, to_array, common);
   Face_field_request r;
@@ -116,22 +122,186 @@ Face_field_request face_field_request(const TriangleMesh& tm, const NamedParamet
   }
   r.alignment = alignment_request(np, has_guidance);
   read_face_constraints(np, face_of_index, to_array, r);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
+    r.prescribed_index = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
+                                            num_vertices(tm), index_of, "vertex");
+  r.prescribed = !r.prescribed_index.empty();
   return r;
 }
 
 // The corner 3f+c of the indexed mesh whose side is the halfedge h.
-template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
-std::size_t corner_of_halfedge(const TriangleMesh& tm, const Indexed_mesh& m, VertexIndexMap vim, FaceIndexMap fim,
+template <typename TriangleMesh, typename IndexOfVertex, typename IndexOfFace>
+std::size_t corner_of_halfedge(const TriangleMesh& tm, const Indexed_mesh& m, const IndexOfVertex& index_of_vertex,
+                               const IndexOfFace& index_of_face,
                                typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
 {
-  const std::size_t f = static_cast<std::size_t>(get(fim, face(h, tm)));
-  const std::size_t s = static_cast<std::size_t>(get(vim, source(h, tm)));
+  const std::size_t f = index_of_face(face(h, tm)), s = index_of_vertex(source(h, tm));
   for(std::size_t c = 0; c < 3; ++c)
     if(static_cast<std::size_t>(m.faces[f][c]) == s) return 3 * f + c;
   return no_index;
 }
 
 } // namespace internal
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+\brief computes globally optimal direction fields on the faces of one triangle mesh, repeatedly, without
+redoing the work that does not change.
+
+Construction does the mesh work once: the indexing, the intrinsic geometry, the components and the
+connection across the edges. Each call of `compute()` then computes one field, with the named parameters
+and results of `compute_globally_optimal_face_directions()` (which is this class used once). The first call
+with `prescribed_singularities` also builds the spanning trees of the construction and factors the Laplacian
+of the faces (user manual, section \ref SMDF_faces); both are kept, so that every later prescription (an edit
+of the singularities, or another degree) costs a sweep, two triangular solves and the output. The mesh must
+not change while the object is alive. `compute()` may be called from several threads; prescriptions run one
+at a time.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam GeomTraits a model of `DirectionFieldTraits_3`; by default the kernel of the mesh's point type
+\tparam SparseSolver a model of `SparseLinearAlgebraWithFactorTraits_d` with `std::complex<double>` as `NT`
+
+\sa `compute_globally_optimal_face_directions()`, `Globally_optimal_direction_field`
+*/
+template <typename TriangleMesh,
+          typename GeomTraits = typename GetGeomTraits<TriangleMesh>::type,
+          typename SparseSolver = Default_direction_field_solver>
+class Globally_optimal_face_direction_field
+{
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  typedef std::chrono::steady_clock Clock;
+
+public:
+  /// \name Creation
+  /// @{
+
+  /*!
+  does the mesh work: indexing, intrinsic geometry, components, the connection across the edges.
+
+  \param tmesh the triangle mesh; it is not modified, and must outlive the object unchanged
+  \param np an optional sequence of named parameters among `vertex_point_map`, `vertex_index_map`,
+         `face_index_map`, `geom_traits` and `intrinsic_mollification`, with the meaning and defaults given
+         for `compute_globally_optimal_directions()`
+  \throws Invalid_input_error for the meshes `Globally_optimal_direction_field` refuses
+  */
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Globally_optimal_face_direction_field(const TriangleMesh& tmesh,
+                                                 const NamedParameters& np = parameters::default_values())
+    : m_tmesh(&tmesh)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    const auto start = Clock::now();
+    m_traits = choose_parameter<GeomTraits>(get_parameter(np, internal_np::geom_traits));
+    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tmesh));
+    const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
+    const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
+    m_index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
+    m_index_of_face = [fim](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
+    const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
+    if(!(mollification >= 0.) || !std::isfinite(mollification))
+      throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
+    m_face_of_index.resize(num_faces(tmesh));
+    for(face_descriptor f : faces(tmesh)) m_face_of_index[m_index_of_face(f)] = f;
+    m_vertex_of_index.resize(num_vertices(tmesh));
+    for(vertex_descriptor v : vertices(tmesh)) m_vertex_of_index[m_index_of_vertex(v)] = v;
+    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    m_engine = std::make_unique<Engine>(
+      internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim),
+      mollification);
+    m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /*!
+  computes one field, exactly as `compute_globally_optimal_face_directions(tmesh, face_direction_map, np)`
+  would, reusing what earlier calls computed. The named parameters are those of
+  `compute_globally_optimal_face_directions()` except the ones of the constructor (ignored here). In the
+  result, `timings` count the work of this call only, not the construction.
+
+  \tparam FaceDirectionMap as for `compute_globally_optimal_face_directions()`
+  \tparam NamedParameters a sequence of named parameters
+  \param face_direction_map the property map receiving a unit direction per face
+  \param np the named parameters of the field (see `compute_globally_optimal_face_directions()`)
+  \returns the report of this field, as `compute_globally_optimal_face_directions()` returns it
+  \throws Invalid_input_error, Solver_failure_error as `compute_globally_optimal_face_directions()`
+  */
+  template <typename FaceDirectionMap, typename NamedParameters = parameters::Default_named_parameters>
+  Face_direction_field_result compute(FaceDirectionMap face_direction_map,
+                                      const NamedParameters& np = parameters::default_values()) const
+  {
+    using parameters::get_parameter;
+    internal::check_field_parameters(parameters::choose_parameter(get_parameter(np, internal_np::degree), 1),
+                                     parameters::choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
+    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    const internal::Face_field_request request =
+      internal::face_field_request(*m_tmesh, np, m_face_of_index, m_index_of_vertex, to_array);
+    internal::Face_field_answer answer;
+    const Face_direction_field_result result =
+      internal::compute_with_solver<SparseSolver>(np, *m_engine, request, answer);
+    write_answer(answer, face_direction_map, np);
+    return result;
+  }
+
+  /// @}
+
+  /// \cond SKIP_IN_MANUAL
+  // The time spent in the constructor, in milliseconds.
+  double construction_ms() const { return m_construction_ms; }
+  /// \endcond
+
+private:
+  typedef internal::Face_field_engine<SparseSolver> Engine;
+
+  // The directions, the singular vertices and the matching into the user's
+  // maps and iterator, sequentially (a property map need not be thread-safe).
+  template <typename FaceDirectionMap, typename NamedParameters>
+  void write_answer(const internal::Face_field_answer& answer, FaceDirectionMap face_direction_map,
+                    const NamedParameters& np) const
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    typedef typename GeomTraits::FT FT;
+    const auto construct_vector = m_traits.construct_vector_3_object();
+    for(std::size_t f = 0; f < m_face_of_index.size(); ++f)
+    {
+      const internal::Vec3& d = answer.directions[f];
+      put(face_direction_map, m_face_of_index[f], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+    }
+    auto out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator), CGAL::Emptyset_iterator());
+    for(std::size_t v = 0; v < answer.vertex_index.size(); ++v)
+      if(answer.vertex_index[v] != 0) *out++ = std::make_pair(m_vertex_of_index[v], answer.vertex_index[v]);
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_matching_map_t>::value)
+    {
+      auto matching_map = get_parameter(np, internal_np::edge_matching_map);
+      const TriangleMesh& tm = *m_tmesh;
+      for(auto e : edges(tm))
+      {
+        const auto h = halfedge(e, tm);
+        const bool border = is_border(h, tm) || is_border(opposite(h, tm), tm);
+        put(matching_map, e, border ? 0 : answer.matching[internal::corner_of_halfedge(
+                                            tm, m_engine->mesh(), m_index_of_vertex, m_index_of_face, h)]);
+      }
+    }
+  }
+
+  const TriangleMesh* m_tmesh = nullptr;
+  GeomTraits m_traits;
+  std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;
+  std::function<std::size_t(face_descriptor)> m_index_of_face;
+  std::vector<vertex_descriptor> m_vertex_of_index;
+  std::vector<face_descriptor> m_face_of_index;
+  std::unique_ptr<Engine> m_engine;
+  double m_construction_ms = 0.;
+};
 
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
@@ -150,7 +320,8 @@ Guidance, hard constraints, features and boundary alignment work as for vertex f
 An interior vertex has the integer index `k` (the field's index there is `k / n`); on every
 closed component the indices sum to `n` times the Euler characteristic. The matching of an
 interior edge is the principal one: a consumer that recomputes it from the directions (QuadWild,
-vcglib, libigl) finds the same singular vertices.
+vcglib, libigl) finds the same singular vertices. With `prescribed_singularities` any indices at the
+interior vertices that satisfy Poincare-Hopf are shown exactly.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 \tparam FaceDirectionMap a model of `WritablePropertyMap` with
@@ -220,6 +391,20 @@ vcglib, libigl) finds the same singular vertices.
                    as key type and `bool` as value type}
     \cgalParamDefault{no feature}
   \cgalParamNEnd
+  \cgalParamNBegin{prescribed_singularities}
+    \cgalParamDescription{places the singularities: the interior vertices listed get exactly the index `k / n`
+                          given, every other interior vertex index 0, for any assignment whose indices add up to
+                          `n` times the Euler characteristic on each closed component. The field is the parallel
+                          section of the least changed connection on the dual mesh, each component turned as a
+                          whole towards its guidance and constrained faces, and turns along each handle and
+                          boundary loop by the multiple of \f$ 2\pi / n \f$ nearest the surface's own (user
+                          manual, section \ref SMDF_faces). Where the field must turn by \f$ \pi / n \f$ or more
+                          across an edge, the matching written to `edge_matching_map` is not the principal one
+                          (`Face_direction_field_result::number_of_non_principal_jumps` counts those edges)}
+    \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%vertex_descriptor, int>`, as
+                   `singularities_output_iterator` writes them}
+    \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
+  \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{receives, for each interior vertex with a non-zero index, the pair of the vertex and its
                           integer index `k`, in the order of the vertex index map}
@@ -230,8 +415,8 @@ vcglib, libigl) finds the same singular vertices.
   \cgalParamNBegin{edge_matching_map}
     \cgalParamDescription{receives per edge the period jump `p` from the face of `halfedge(e)` to the face of its
                           opposite: that face's first direction is the first one's, transported across the edge
-                          and turned `p` times by \f$ 2\pi/n \f$ (and by less than \f$ \pi/n \f$ more); `0` on the
-                          boundary}
+                          and turned `p` times by \f$ 2\pi/n \f$ (and by less than \f$ \pi/n \f$ more, except
+                          across the edges `number_of_non_principal_jumps` counts); `0` on the boundary}
     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
                    as key type and `int` as value type}
     \cgalParamDefault{no output}
@@ -244,8 +429,10 @@ vcglib, libigl) finds the same singular vertices.
 
 \returns a `Face_direction_field_result`
 \throws Invalid_input_error for the inputs `compute_globally_optimal_directions()` refuses, for `s` other than 0,
-        and for the named parameters of vertex fields (`vertex_guidance_map`, `vertex_is_constrained_map`,
-        `prescribed_singularities`); nothing is written to the output maps then.
+        for the named parameters of vertex fields (`vertex_guidance_map`, `vertex_is_constrained_map`,
+        `prescribed_loop_turns`), and for a prescription that names a boundary or isolated vertex, lists a vertex
+        twice, breaks Poincare-Hopf on a closed component, or comes with `alignment_lambda` or `alignment_weight`;
+        nothing is written to the output maps then.
 \throws Solver_failure_error if the sparse solver fails
 */
 #ifndef DOXYGEN_RUNNING
@@ -258,66 +445,24 @@ compute_globally_optimal_face_directions(const TriangleMesh& tmesh, FaceDirectio
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
   typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
   typedef typename GetSolver<CGAL_NP_CLASS, Default_direction_field_solver>::type Sparse_solver;
-  typedef boost::graph_traits<TriangleMesh> Graph_traits;
   internal::check_field_parameters(choose_parameter(get_parameter(np, internal_np::degree), 1),
                                    choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
-  const Geom_traits traits = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tmesh));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
-  const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
-  if(!(mollification >= 0.) || !std::isfinite(mollification))
-    throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
-  const internal::Point_to_array<Geom_traits> to_array{traits};
-  std::vector<typename Graph_traits::face_descriptor> face_of_index(num_faces(tmesh));
-  for(auto f : faces(tmesh)) face_of_index[static_cast<std::size_t>(get(fim, f))] = f;
-  std::vector<typename Graph_traits::vertex_descriptor> vertex_of_index(num_vertices(tmesh));
-  for(auto v : vertices(tmesh)) vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
-  auto index_of = [vim](typename Graph_traits::vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
-  const internal::Face_field_request request = internal::face_field_request(tmesh, np, face_of_index, index_of,
-                                                                             to_array);
-
-  const auto start = std::chrono::steady_clock::now();
-  const internal::Face_field_engine<Sparse_solver> engine(
-    internal::make_indexed_mesh(tmesh, [&](typename Graph_traits::vertex_descriptor v) { return to_array(get(vpm, v)); },
-                                vim, fim),
-    mollification);
-  Sparse_solver solver = choose_parameter(get_parameter(np, internal_np::sparse_linear_solver), Sparse_solver());
-  internal::Face_field_answer answer;
-  Face_direction_field_result result = engine.compute(request, solver, answer);
+  const Globally_optimal_face_direction_field<TriangleMesh, Geom_traits, Sparse_solver> field(tmesh, np);
+  Face_direction_field_result result = field.compute(face_direction_map, np);
   // the construction (indexing, geometry, dual connection) is part of the setup
-  const double total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  result.timings.setup_ms += total_ms - result.timings.total_ms;
-  result.timings.total_ms = total_ms;
-
-  typedef typename Geom_traits::FT FT;
-  const auto construct_vector = traits.construct_vector_3_object();
-  for(std::size_t f = 0; f < face_of_index.size(); ++f)
-  {
-    const internal::Vec3& d = answer.directions[f];
-    put(face_direction_map, face_of_index[f], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
-  }
-  auto out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator), CGAL::Emptyset_iterator());
-  for(std::size_t v = 0; v < answer.vertex_index.size(); ++v)
-    if(answer.vertex_index[v] != 0) *out++ = std::make_pair(vertex_of_index[v], answer.vertex_index[v]);
-  if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::edge_matching_map_t>::value)
-  {
-    auto matching_map = get_parameter(np, internal_np::edge_matching_map);
-    for(auto e : edges(tmesh))
-    {
-      const auto h = halfedge(e, tmesh);
-      const bool border = is_border(h, tmesh) || is_border(opposite(h, tmesh), tmesh);
-      put(matching_map, e, border ? 0 : answer.matching[internal::corner_of_halfedge(tmesh, engine.mesh(), vim, fim, h)]);
-    }
-  }
+  result.timings.setup_ms += field.construction_ms();
+  result.timings.total_ms += field.construction_ms();
   return result;
 }
 #ifndef DOXYGEN_RUNNING
 } // inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE
+#endif
+
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION
+// compiled once, in the library CGAL::Surface_mesh_direction_fields_compiled
+extern template class internal::Face_field_engine<Default_direction_field_solver>;
 #endif
 
 } // namespace Surface_mesh_direction_fields

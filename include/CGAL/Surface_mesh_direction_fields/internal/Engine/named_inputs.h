@@ -109,6 +109,42 @@ unsigned int checked_count(Integer value, const char* name)
 }
 
 // n, s and the eigen-solve's options.
+// k per element (face or vertex, by index) from the user's range of
+// (element, k) pairs of prescribed_singularities; an element out of range or
+// listed twice is an error.
+template <typename Range, typename IndexOf>
+std::vector<int> prescribed_indices(const Range& prescription, std::size_t count, const IndexOf& index_of,
+                                    const std::string& element)
+{
+  std::vector<int> k(count, 0);
+  std::vector<unsigned char> listed(count, 0);
+  for(const auto& entry : prescription)
+  {
+    const std::size_t i = index_of(entry.first);
+    if(i >= count)
+      throw Invalid_input_error("prescribed_singularities names " + element + " " + std::to_string(i) +
+                                ", but the mesh has " + std::to_string(count) + " " + element + "s");
+    if(listed[i]++)
+      throw Invalid_input_error("prescribed_singularities lists " + element + " " + std::to_string(i) + " twice");
+    k[i] = static_cast<int>(entry.second);
+  }
+  return k;
+}
+
+// One field from an engine (of vertex or face fields) with the user's
+// sparse_linear_solver, for this call only, or else the engine's own.
+template <typename SparseSolver, typename NamedParameters, typename Engine, typename Request, typename Answer>
+auto compute_with_solver(const NamedParameters& np, Engine& engine, const Request& request, Answer& answer)
+{
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::sparse_linear_solver_t>::value)
+  {
+    const SparseSolver solver = parameters::get_parameter(np, internal_np::sparse_linear_solver);
+    return engine.compute(request, &solver, answer);
+  }
+  else
+    return engine.compute(request, nullptr, answer);
+}
+
 template <typename NamedParameters>
 void read_field_parameters(const NamedParameters& np, Field_request& r)
 {

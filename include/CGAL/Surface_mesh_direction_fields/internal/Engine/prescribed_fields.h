@@ -249,7 +249,8 @@ private:
           (no_turns_given && m_adjustment->number_of_loops() > 0
              ? "give the turns along the surface's loops as well (a field's own are in its result's loop_turns), or "
              : "") +
-          "spread singularities that are close together, or refine the mesh where curvature is concentrated",
+          "spread singularities that are close together, or refine the mesh where curvature is concentrated" +
+            face_field_can_show(),
           f);
   }
 

@@ -63,12 +63,13 @@ struct Dual_connection
 // between the barycentres of its two faces laid out flat across it (the
 // diagonal Hodge star of the barycentric dual). It is positive for every pair
 // of faces with area, unlike the circumcentric dual's cotangent weights.
-inline double dual_edge_weight(const Indexed_mesh& m, const Tangent_spaces& ts, std::size_t corner,
-                               std::size_t twin)
+inline double dual_edge_weight(const Tangent_spaces& ts, const std::vector<Face_geometry>& geometry,
+                               std::size_t corner, std::size_t twin)
 {
   const std::size_t f = corner / 3, g = twin / 3;
   const int c = static_cast<int>(corner % 3), d = static_cast<int>(twin % 3);
-  const Face_geometry gf = face_geometry(m, f, ts.mollification), gg = face_geometry(m, g, ts.mollification);
+  const Face_geometry& gf = geometry[f];
+  const Face_geometry& gg = geometry[g];
   const double length = std::sqrt(gf.squared_length[c]);
   // with the side a -> b of f along the x axis and its midpoint at 0, f's third vertex is at (x_f, h_f)
   // and g's at (x_g, -h_g); the corner of g at a is (d+1) % 3, its sides a -> c_g then a -> b
@@ -84,13 +85,17 @@ inline Dual_connection dual_connection(const Indexed_mesh& m, const Tangent_spac
   Dual_connection dc;
   dc.transport.assign(3 * m.number_of_faces(), 0.);
   dc.weight.assign(3 * m.number_of_faces(), 0.);
+  // each face's geometry once (each is read by its three sides)
+  std::vector<Face_geometry> geometry(m.number_of_faces());
+  parallel_for_each_index(m.number_of_faces(),
+                          [&](std::size_t f) { geometry[f] = face_geometry(m, f, ts.mollification); });
   parallel_for_each_index(3 * m.number_of_faces(), [&](std::size_t corner) {
     const std::size_t twin = m.twin_corner[corner];
     if(twin == no_index) return;
     const double in_f = side_angle(ts, corner / 3, static_cast<int>(corner % 3));
     const double in_g = side_angle(ts, twin / 3, static_cast<int>(twin % 3)) + CGAL_PI;
     dc.transport[corner] = reduce_angle(in_g - in_f);
-    dc.weight[corner] = dual_edge_weight(m, ts, corner, twin);
+    dc.weight[corner] = dual_edge_weight(ts, geometry, corner, twin);
   });
   return dc;
 }
@@ -207,30 +212,34 @@ inline double face_rotation(const std::vector<double>& theta, const Dual_connect
   return reduce_angle(theta[twin / 3] - theta[corner / 3] - static_cast<double>(n) * dc.transport[corner]);
 }
 
-// The turn of the fan of v: the rotations omega across the interior sides
-// between consecutive corners plus n times the angle defect (2 pi - sum of
-// the corner angles inside, pi - that sum on the boundary).
-inline double fan_turn(const Indexed_mesh& m, const Tangent_spaces& ts, const Dual_connection& dc,
-                       const std::vector<double>& theta, int n, std::size_t v)
+// The turn of the fan of v: the field's rotations across the interior sides
+// between consecutive corners (rotation(side), across the side from its face
+// to its twin's) plus n times the angle defect (2 pi - sum of the corner
+// angles inside, pi - that sum on the boundary).
+template <typename Rotation>
+double fan_turn(const Indexed_mesh& m, const Tangent_spaces& ts, int n, std::size_t v, const Rotation& rotation)
 {
   double turn = (m.is_border_vertex[v] ? CGAL_PI : 2. * CGAL_PI);
-  double rotation = 0.;
+  double rotated = 0.;
   for(std::size_t corner : m.fan(v))
   {
     turn -= ts.corner_angle[corner];
     // the corner's second side, reversed, is the side of the previous corner of f
-    const std::size_t side = Indexed_mesh::previous_corner(corner), twin = m.twin_corner[side];
-    if(twin != no_index) rotation += face_rotation(theta, dc, n, side, twin);
+    const std::size_t side = Indexed_mesh::previous_corner(corner);
+    if(m.twin_corner[side] != no_index) rotated += rotation(side);
   }
-  return rotation + static_cast<double>(n) * turn;
+  return rotated + static_cast<double>(n) * turn;
 }
 
-inline Face_field_turning face_field_turning(const Indexed_mesh& m, const Tangent_spaces& ts,
-                                             const Dual_connection& dc, const Components& comps,
-                                             const std::vector<Complex>& u, int n)
+// The indices and the matching of the field with n-th power angles theta
+// whose rotation across each interior side is rotation(side): the period
+// jump across a side is the whole turns of 2 pi that theta_g - theta_f -
+// n rho holds beyond that rotation.
+template <typename Rotation>
+Face_field_turning turning_of_field(const Indexed_mesh& m, const Tangent_spaces& ts, const Dual_connection& dc,
+                                    const Components& comps, const std::vector<double>& theta, int n,
+                                    const Rotation& rotation)
 {
-  std::vector<double> theta(u.size());
-  for(std::size_t f = 0; f < u.size(); ++f) theta[f] = std::arg(u[f]);
   Face_field_turning turning;
   turning.vertex_index.assign(m.number_of_vertices(), 0);
   turning.boundary_index.assign(comps.list.size(), 0);
@@ -238,25 +247,36 @@ inline Face_field_turning face_field_turning(const Indexed_mesh& m, const Tangen
   for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
   {
     if(m.fan_size(v) == 0) continue;
-    const double turn = fan_turn(m, ts, dc, theta, n, v) / (2. * CGAL_PI);
+    const double turn = fan_turn(m, ts, n, v, rotation) / (2. * CGAL_PI);
     if(m.is_border_vertex[v])
       boundary_turn[comps.component_of_face[m.fan_corners[m.fan_offsets[v]] / 3]] += turn;
     else
       turning.vertex_index[v] = static_cast<int>(std::lround(turn));
   }
   for(std::size_t c = 0; c < comps.list.size(); ++c) turning.boundary_index[c] = std::llround(boundary_turn[c]);
-  // the principal matching: the whole turns of 2 pi / n between the first
-  // direction of f, transported, and the first direction of g
   turning.matching.assign(3 * m.number_of_faces(), 0);
   for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
   {
     const std::size_t twin = m.twin_corner[corner];
     if(twin == no_index) continue;
     const double jump = theta[twin / 3] - theta[corner / 3] - static_cast<double>(n) * dc.transport[corner] -
-                        face_rotation(theta, dc, n, corner, twin);
+                        rotation(corner);
     turning.matching[corner] = static_cast<int>(std::lround(jump / (2. * CGAL_PI)));
   }
   return turning;
+}
+
+// The turning of a field u read with the principal matching: the rotation
+// across each side is taken in (-pi, pi].
+inline Face_field_turning face_field_turning(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                             const Dual_connection& dc, const Components& comps,
+                                             const std::vector<Complex>& u, int n)
+{
+  std::vector<double> theta(u.size());
+  for(std::size_t f = 0; f < u.size(); ++f) theta[f] = std::arg(u[f]);
+  return turning_of_field(m, ts, dc, comps, theta, n, [&](std::size_t side) {
+    return face_rotation(theta, dc, n, side, m.twin_corner[side]);
+  });
 }
 
 } // namespace internal

@@ -100,6 +100,8 @@ struct Face_field_request
   std::vector<unsigned char> constrained;   // per face; empty: none
   std::vector<Vec3> constrained_direction;  // per face (read where constrained)
   std::vector<std::array<std::size_t, 2> > feature_edges;  // the two vertices of each feature edge
+  bool prescribed = false;
+  std::vector<int> prescribed_index;  // k per vertex, when prescribed
   std::function<bool(double)> progress;
 };
 

@@ -520,6 +520,14 @@ inline std::vector<std::complex<double> > parallel_section(const Cycle_basis& ba
   return u;
 }
 
+// What the refusals of a prescription add: the field on faces has no such
+// limit (user manual, section "Fields on Faces").
+inline std::string face_field_can_show()
+{
+  return "; a field on faces (compute_globally_optimal_face_directions(), the program's --on faces) places "
+         "singularities at vertices and shows any indices there that satisfy Poincare-Hopf, side by side included";
+}
+
 // Why face f cannot hold index k/n: the field turns by less than pi along
 // each side, so 2 pi k must be within 3 pi of the face's curvature times n.
 inline std::string unholdable_index_message(std::size_t f, int k, const Connection& con)
@@ -535,7 +543,7 @@ inline std::string unholdable_index_message(std::size_t f, int k, const Connecti
          ": with its curvature the field's n-th power would turn " +
          compact_number(std::abs(k - con.holonomy[f] / (2. * CGAL_PI))) +
          " times along its sides, and a field on the vertices turns at most one and a half times around a triangle "
-         "(spread the index over neighbouring faces)";
+         "(spread the index over neighbouring faces)" + face_field_can_show();
 }
 
 // Two neighbouring faces together: the field turns by less than pi along
@@ -557,9 +565,20 @@ inline void check_neighbouring_faces(const Indexed_mesh& m, const Connection& co
                                   std::to_string(con.degree) + ") and its neighbour, face " + std::to_string(g) +
                                   " (index " + std::to_string(k[g]) + "/" + std::to_string(con.degree) +
                                   "), ask the field to turn " + compact_number(std::abs(asked) / (2. * CGAL_PI)) +
-                                  " times along their four outer sides, where it turns less than two (move them apart)",
+                                  " times along their four outer sides, where it turns less than two (move them apart)" +
+                                  face_field_can_show(),
                                 f);
   }
+}
+
+// Poincare-Hopf on closed component c: its prescribed k add up to n chi.
+inline void check_index_sum(std::size_t c, long long sum, int degree, int euler_characteristic)
+{
+  const long long expected = static_cast<long long>(degree) * euler_characteristic;
+  if(sum != expected)
+    throw Invalid_input_error("the prescribed indices of closed component " + std::to_string(c) + " add up to " +
+                              std::to_string(sum) + ", but Poincare-Hopf requires n chi = " + std::to_string(degree) +
+                              " * " + std::to_string(euler_characteristic) + " = " + std::to_string(expected));
 }
 
 // The checks of a prescription that need no solve: an index each face can
@@ -578,12 +597,7 @@ inline void check_prescription(const Indexed_mesh& m, const Components& comps, c
     if(!reports[c].is_closed) continue;
     long long sum = 0;
     for(std::size_t f : comps.list[c].faces) sum += k[f];
-    const long long expected = static_cast<long long>(con.degree) * reports[c].euler_characteristic;
-    if(sum != expected)
-      throw Invalid_input_error("the prescribed indices of closed component " + std::to_string(c) + " add up to " +
-                                std::to_string(sum) + ", but Poincare-Hopf requires n chi = " +
-                                std::to_string(con.degree) + " * " + std::to_string(reports[c].euler_characteristic) +
-                                " = " + std::to_string(expected));
+    check_index_sum(c, sum, con.degree, reports[c].euler_characteristic);
   }
 }
 

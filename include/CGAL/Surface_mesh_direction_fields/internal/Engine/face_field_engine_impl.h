@@ -1,0 +1,482 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_FIELD_ENGINE_IMPL_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_FIELD_ENGINE_IMPL_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine.h>
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/face_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/face_prescription.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_inputs.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+// The definitions of the engine of fields on faces (face_field_engine.h):
+// the mesh's intrinsic geometry and dual connection once, then per component
+// the smallest eigenvector of the pencil on faces or the aligned /
+// constrained solve (or the prescribed singularities' parallel field), and
+// at the end the indices at the vertices and the matching (user manual,
+// section "Fields on Faces").
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// The hard constraints on faces: per face, 0 or the n-th power of the
+// direction it must have (a unit complex number), from the feature edges,
+// the boundary and the user's constrained faces (which win).
+inline std::vector<Complex> face_constraints(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                             const Face_field_request& request)
+{
+  const int n = request.degree;
+  std::vector<Complex> sum(m.number_of_faces(), Complex(0., 0.)), first(m.number_of_faces(), Complex(0., 0.));
+  auto add = [&](std::size_t f, double angle) {
+    const Complex value = std::polar(1., static_cast<double>(n) * angle);
+    if(first[f] == Complex(0., 0.)) first[f] = value;
+    sum[f] += value;
+  };
+  std::unordered_set<unsigned long long> features;
+  const unsigned long long nv = m.number_of_vertices();
+  for(const auto& e : request.feature_edges)
+    features.insert((std::min)(e[0], e[1]) * nv + (std::max)(e[0], e[1]));
+  const double boundary_turn = request.boundary == Boundary_alignment::NORMAL ? 0.5 * CGAL_PI : 0.;
+  for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
+  {
+    const std::size_t f = corner / 3, a = m.vertex_of_corner(corner);
+    const std::size_t b = m.vertex_of_corner(Indexed_mesh::next_corner(corner));
+    const double angle = side_angle(ts, f, static_cast<int>(corner % 3));
+    if(m.twin_corner[corner] == no_index && request.boundary != Boundary_alignment::NONE)
+      add(f, angle + boundary_turn);
+    else if(!features.empty() && features.count((std::min)(a, b) * nv + (std::max)(a, b)))
+      add(f, angle);
+  }
+  std::vector<Complex> c(m.number_of_faces(), Complex(0., 0.));
+  for(std::size_t f = 0; f < c.size(); ++f)
+  {
+    if(!request.constrained.empty() && request.constrained[f])
+    {
+      c[f] = std::polar(1., static_cast<double>(n) * angle_in_face(m, f, request.constrained_direction[f]));
+      continue;
+    }
+    // two sides that disagree (n times their angle) leave the first one's direction
+    c[f] = std::abs(sum[f]) > 1e-6 ? sum[f] / std::abs(sum[f]) : first[f];
+  }
+  return c;
+}
+
+// The guidance on faces: the curvature line field raised to n / 2 (keeping
+// its magnitude, the difference of the principal curvatures), plus the
+// user's vectors (projected, their length their weight).
+inline std::vector<Complex> face_guidance(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                          const Face_field_request& request)
+{
+  const int n = request.degree;
+  std::vector<Complex> q(m.number_of_faces(), Complex(0., 0.));
+  if(request.curvature != Principal_curvature_alignment::NONE)
+  {
+    const std::vector<Complex> line = face_curvature_line_field(m, ts);
+    const double turn = request.curvature == Principal_curvature_alignment::MINIMUM ? CGAL_PI : 0.;
+    for(std::size_t f = 0; f < q.size(); ++f)
+      q[f] = std::polar(std::abs(line[f]), 0.5 * static_cast<double>(n) * (std::arg(line[f]) + turn));
+  }
+  if(!request.guidance.empty())
+    for(std::size_t f = 0; f < q.size(); ++f)
+    {
+      const Vec3 normal = face_frame(m, f)[1];
+      const Vec3& w = request.guidance[f];
+      const double length = norm(w - dot(w, normal) * normal);
+      if(length > 0.) q[f] += std::polar(length, static_cast<double>(n) * angle_in_face(m, f, w));
+    }
+  return q;
+}
+
+template <typename SparseSolver>
+class Face_field_engine<SparseSolver>::Impl
+{
+  typedef std::chrono::steady_clock Clock;
+
+public:
+  Impl(Indexed_mesh mesh, double mollification) : m_mesh(std::move(mesh))
+  {
+    m_length_scale = normalize_coordinates(m_mesh);
+    m_components = split_into_components(m_mesh);
+    m_spaces = compute_tangent_spaces(m_mesh, mollification);
+    check_components_have_area(m_mesh, m_components, m_spaces.mollification);
+    m_dual = dual_connection(m_mesh, m_spaces);
+  }
+
+  Face_direction_field_result compute(const Face_field_request& request, const SparseSolver* user_solver,
+                                      Face_field_answer& answer) const
+  {
+    if(request.prescribed) return compute_prescribed(request, answer);
+    SparseSolver solver = user_solver ? *user_solver : SparseSolver();
+    const auto start = Clock::now();
+    Face_direction_field_result result;
+    result.degree = request.degree;
+    result.mollification = m_spaces.mollification / m_length_scale;
+    Progress_report progress(request.progress);
+    progress.reached(0.);
+    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, request);
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    Eigen_solve_options options;
+    options.max_iterations = request.max_iterations;
+    options.residual_tolerance = request.residual_tolerance;
+    options.random_seed = request.random_seed;
+    options.keep_going = progress.keep_going_test();
+    std::vector<Complex> u(m_mesh.number_of_faces(), Complex(0., 0.));
+    result.components.resize(m_components.list.size());
+    result.timings.setup_ms = milliseconds_since(start);
+    for(std::size_t c = 0; c < m_components.list.size(); ++c)
+    {
+      progress.reached(0.1 + 0.9 * static_cast<double>(c) / static_cast<double>(m_components.list.size()));
+      solve_component(c, request, guidance, constraints, options, solver, result, u);
+    }
+    progress.reached(1.);
+    write_answer(u, request.degree, result, answer);
+    result.timings.total_ms = milliseconds_since(start);
+    result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
+    return result;
+  }
+
+  const Indexed_mesh& mesh() const { return m_mesh; }
+
+private:
+  // The field with the prescribed vertex indices (user manual, section
+  // "Fields on Faces"): the parallel section of the least changed dual
+  // connection, each component turned as a whole towards its guidance and
+  // constraints; the matching and the indices read from the change itself.
+  Face_direction_field_result compute_prescribed(const Face_field_request& request, Face_field_answer& answer) const
+  {
+    const auto start = Clock::now();
+    Face_direction_field_result result;
+    result.degree = request.degree;
+    result.mollification = m_spaces.mollification / m_length_scale;
+    result.prescribed = true;
+    result.components.resize(m_components.list.size());
+    for(std::size_t c = 0; c < m_components.list.size(); ++c)
+    {
+      describe(m_components.list[c], result.components[c]);
+      result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
+      result.components[c].converged = true;
+    }
+    check_face_prescription(request, result.components);
+    Progress_report progress(request.progress);
+    progress.reached(0.);
+    // the trees and the factored Laplacian of the faces, kept for the next prescription
+    std::lock_guard<std::mutex> exclusive(m_change_mutex);
+    if(!m_change)
+    {
+      m_change = std::make_unique<Face_connection_change>(m_mesh, m_spaces, m_dual, m_components);
+      result.timings.factorization_ms = milliseconds_since(start);
+    }
+    Face_connection_change& change = *m_change;
+    const Dual_trees& trees = change.trees();
+    result.timings.setup_ms = milliseconds_since(start) - result.timings.factorization_ms;
+    const Eigen::VectorXd delta = change.solve(request.prescribed_index, request.degree);
+    std::vector<double> theta = change.parallel_angles(delta);
+    turn_towards_guidance(request, theta);
+    progress.reached(1.);
+    const auto rotation = [&](std::size_t side) { return change_across(trees, delta, side); };
+    for(std::size_t side = 0; side < 3 * m_mesh.number_of_faces(); ++side)
+      if(m_mesh.twin_corner[side] != no_index && is_representative_side(m_mesh, side) &&
+         std::abs(rotation(side) - face_rotation(theta, m_dual, request.degree, side, m_mesh.twin_corner[side])) > 1e-6)
+        ++result.number_of_non_principal_jumps;
+    write_turning(theta, turning_of_field(m_mesh, m_spaces, m_dual, m_components, theta, request.degree, rotation),
+                  request.degree, result, answer);
+    result.timings.total_ms = milliseconds_since(start);
+    result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
+    return result;
+  }
+
+  // Only interior vertices have an index, and a closed component's indices
+  // add up to n chi (Poincare-Hopf); every other assignment is shown.
+  void check_face_prescription(const Face_field_request& request,
+                               const std::vector<Face_field_component_report>& reports) const
+  {
+    if(request.alignment.lambda_given || request.alignment.weight_given)
+      throw Invalid_input_error("alignment_lambda and alignment_weight do not apply with prescribed_singularities "
+                                "(the field is turned as a whole towards the guidance)");
+    const std::vector<int>& k = request.prescribed_index;
+    for(std::size_t v = 0; v < k.size(); ++v)
+    {
+      if(k[v] == 0) continue;
+      if(m_mesh.fan_size(v) == 0)
+        throw Invalid_input_error("prescribed_singularities names vertex " + std::to_string(v) +
+                                  ", which belongs to no face");
+      if(m_mesh.is_border_vertex[v])
+        throw Invalid_input_error("prescribed_singularities names vertex " + std::to_string(v) + " on the boundary, "
+                                  "where a field on faces has no index (the boundary's turning is the component's "
+                                  "boundary_index)");
+    }
+    for(std::size_t c = 0; c < reports.size(); ++c)
+    {
+      if(!reports[c].is_closed) continue;
+      long long sum = 0;
+      for(std::size_t v : m_components.list[c].vertices) sum += k[v];
+      check_index_sum(c, sum, request.degree, reports[c].euler_characteristic);
+    }
+  }
+
+  // Each component's field turned by the angle that best matches its
+  // guidance and constraints (n-th powers, weighted by the face areas).
+  void turn_towards_guidance(const Face_field_request& request, std::vector<double>& theta) const
+  {
+    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, request);
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    for(const Component& comp : m_components.list)
+    {
+      Complex sum(0., 0.);
+      for(std::size_t f : comp.faces)
+        sum += m_spaces.face_area[f] * (guidance[f] + constraints[f]) * std::polar(1., -theta[f]);
+      if(std::abs(sum) == 0.) continue;
+      const double turn = std::arg(sum);
+      for(std::size_t f : comp.faces) theta[f] = reduce_angle(theta[f] + turn);
+    }
+  }
+
+  void solve_component(std::size_t c, const Face_field_request& request, const std::vector<Complex>& guidance,
+                       const std::vector<Complex>& constraint_values, const Eigen_solve_options& options,
+                       SparseSolver& solver, Face_direction_field_result& result, std::vector<Complex>& u) const
+  {
+    const Component& comp = m_components.list[c];
+    const std::vector<std::size_t> local = local_face_numbers(comp, m_mesh.number_of_faces());
+    const auto start = Clock::now();
+    const Face_energy_and_mass em =
+      face_energy_and_mass(m_mesh, m_spaces, m_dual, comp, request.degree, local);
+    result.timings.setup_ms += milliseconds_since(start);
+    const Eigen::Index nf = static_cast<Eigen::Index>(comp.faces.size());
+    Complex_vector q(nf);
+    Constraints constraints;
+    constraints.is_constrained.assign(comp.faces.size(), 0);
+    constraints.values = Complex_vector::Zero(nf);
+    for(Eigen::Index i = 0; i < nf; ++i)
+    {
+      const std::size_t f = comp.faces[static_cast<std::size_t>(i)];
+      q[i] = guidance[f];
+      constraints.is_constrained[static_cast<std::size_t>(i)] = constraint_values[f] != Complex(0., 0.);
+      constraints.values[i] = constraint_values[f];
+    }
+    Face_field_component_report& report = result.components[c];
+    describe(comp, report);
+    const Complex_vector x = field_of_component(em, q, constraints, request.alignment, options, solver, report,
+                                                result.timings);
+    for(Eigen::Index i = 0; i < nf; ++i) u[comp.faces[static_cast<std::size_t>(i)]] = x[i];
+    report.eigenvalue *= m_length_scale * m_length_scale;
+    report.lambda *= m_length_scale * m_length_scale;
+  }
+
+  void describe(const Component& comp, Face_field_component_report& report) const
+  {
+    std::size_t border_sides = 0;
+    for(std::size_t f : comp.faces)
+      for(int c = 0; c < 3; ++c) border_sides += m_mesh.twin_corner[3 * f + static_cast<std::size_t>(c)] == no_index;
+    const std::size_t edges = (3 * comp.faces.size() + border_sides) / 2;
+    report.number_of_vertices = comp.vertices.size();
+    report.number_of_faces = comp.faces.size();
+    report.euler_characteristic = static_cast<int>(static_cast<long long>(comp.vertices.size()) -
+                                                   static_cast<long long>(edges) +
+                                                   static_cast<long long>(comp.faces.size()));
+    report.is_closed = border_sides == 0;
+  }
+
+  // The smallest eigenvector (no guidance, no constraint), else the aligned /
+  // constrained solve of (A - lambda_t M) u = M q (user manual, sections "The
+  // Smoothest Field" and "Aligned and Constrained Fields", which hold on faces
+  // with A and M of the faces).
+  Complex_vector field_of_component(const Face_energy_and_mass& em, const Complex_vector& q,
+                                    const Constraints& constraints, const Alignment_request& alignment,
+                                    const Eigen_solve_options& options, SparseSolver& solver,
+                                    Face_field_component_report& report, Direction_field_timings& timings) const
+  {
+    Complex_vector Mq = em.mass * q;
+    const double q_norm = std::sqrt((std::max)(0., q.dot(Mq).real()));
+    const bool aligned = q_norm > 0., constrained = !constraints.empty();
+    if(aligned) Mq /= q_norm;
+    report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
+    report.converged = true;
+    auto eigen_solve = [&] {
+      Factored_matrix<SparseSolver> factored(solver);
+      Eigen_solve_result eig = smallest_eigenpair(em.energy, em.mass, factored, options);
+      timings.factorization_ms += eig.factorization_ms;
+      report.eigenvalue = eig.eigenvalue;
+      report.iterations += eig.iterations;
+      report.residual = eig.residual;
+      report.converged = eig.converged;
+      return std::move(eig.vector);
+    };
+    if(em.energy.rows() == 1)
+    {
+      // a lone face has no energy: its constraint, its guidance, or its first side
+      report.eigenvalue = 0.;
+      const Complex value = constrained ? constraints.values[0] : aligned ? q[0] : Complex(1., 0.);
+      return Complex_vector::Constant(1, value / std::abs(value));
+    }
+    if(!aligned && !constrained) return eigen_solve();
+    if(aligned && alignment.weight_given)
+    {
+      eigen_solve();
+      Factored_matrix<SparseSolver> factored(solver);
+      Complex_vector u;
+      std::size_t evaluations = 0;
+      report.lambda = find_lambda_for_weight(em.energy, em.mass, Mq, constraints, report.eigenvalue,
+                                             alignment.weight, eigenvalue_scale(em.energy, em.mass), factored, u,
+                                             evaluations);
+      report.iterations += evaluations;
+      return normalized_aligned(em, u, aligned, report);
+    }
+    double lambda = alignment.lambda_given ? alignment.lambda : 0.;
+    Complex_vector u;
+    if(!shifted_solve(em, lambda, Mq, constraints, solver, u, timings) ||
+       (!alignment.lambda_given && !constrained && nearly_flat(em, u, Mq, lambda)))
+    {
+      if(alignment.lambda_given)
+        throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 of every "
+                                  "component of the field on faces (got " + compact_number(lambda) + ")");
+      // lambda_1 is (nearly) 0: a flat or developable component, as for vertex fields
+      eigen_solve();
+      lambda = (std::min)(0., report.eigenvalue - 1e-6 * eigenvalue_scale(em.energy, em.mass));
+      if(!shifted_solve(em, lambda, Mq, constraints, solver, u, timings))
+        throw Solver_failure_error("the sparse solver could not factor A - lambda_t M of a field on faces");
+    }
+    report.lambda = lambda;
+    return normalized_aligned(em, u, aligned, report);
+  }
+
+  // Without constraints (A - lambda M) u = M q gives u^* A u = u^* M q + lambda u^* M u: a tiny
+  // Rayleigh quotient means the solution is dominated by an eigenvector of lambda_1 ~ 0.
+  static bool nearly_flat(const Face_energy_and_mass& em, const Complex_vector& u, const Complex_vector& Mq,
+                          double lambda)
+  {
+    const double u_mass = u.dot(em.mass * u).real();
+    const double rayleigh_quotient = u.dot(Mq).real() / u_mass + lambda;
+    return !(rayleigh_quotient >= 1e-10 * eigenvalue_scale(em.energy, em.mass));
+  }
+
+  static bool shifted_solve(const Face_energy_and_mass& em, double lambda, const Complex_vector& Mq,
+                            const Constraints& constraints, SparseSolver& solver, Complex_vector& u,
+                            Direction_field_timings& timings)
+  {
+    const auto start = Clock::now();
+    const Shifted_system system(em.energy, em.mass, lambda, constraints);
+    Factored_matrix<SparseSolver> factored(solver);
+    const bool ok = system.factor(factored, false, Factored_matrix<SparseSolver>::detects_indefinite);
+    timings.factorization_ms += milliseconds_since(start);
+    if(ok) u = system.solve(factored, Mq);
+    return ok && u.allFinite();
+  }
+
+  static Complex_vector normalized_aligned(const Face_energy_and_mass& em, Complex_vector u, bool aligned,
+                                           Face_field_component_report& report)
+  {
+    const double u_norm = m_norm(em.mass, u);
+    report.alignment_weight = aligned ? 1. / (1. + u_norm) : 0.;
+    if(u_norm > 0.) u /= u_norm;
+    return u;
+  }
+
+  void write_answer(const std::vector<Complex>& u, int n, Face_direction_field_result& result,
+                    Face_field_answer& answer) const
+  {
+    std::vector<double> theta(u.size());
+    for(std::size_t f = 0; f < u.size(); ++f) theta[f] = std::arg(u[f]);
+    write_turning(theta, face_field_turning(m_mesh, m_spaces, m_dual, m_components, u, n), n, result, answer);
+  }
+
+  void write_turning(const std::vector<double>& theta, const Face_field_turning& turning, int n,
+                     Face_direction_field_result& result, Face_field_answer& answer) const
+  {
+    answer.directions.resize(theta.size());
+    for(std::size_t f = 0; f < theta.size(); ++f)
+      answer.directions[f] = direction_in_face(m_mesh, f, theta[f] / static_cast<double>(n));
+    for(std::size_t v = 0; v < m_mesh.number_of_vertices(); ++v)
+    {
+      if(turning.vertex_index[v] == 0) continue;
+      Face_field_component_report& report =
+        result.components[m_components.component_of_face[m_mesh.fan_corners[m_mesh.fan_offsets[v]] / 3]];
+      report.index_sum += turning.vertex_index[v];
+      ++report.number_of_singular_vertices;
+    }
+    for(std::size_t c = 0; c < result.components.size(); ++c)
+    {
+      Face_field_component_report& report = result.components[c];
+      report.boundary_index = turning.boundary_index[c];
+      result.index_sum += report.index_sum;
+      result.number_of_singular_vertices += report.number_of_singular_vertices;
+      result.iterations = (std::max)(result.iterations, report.iterations);
+      result.residual = (std::max)(result.residual, report.residual);
+      result.converged = result.converged && report.converged;
+    }
+    answer.vertex_index = turning.vertex_index;
+    answer.matching = turning.matching;
+  }
+
+  Indexed_mesh m_mesh;
+  double m_length_scale = 1.;
+  Components m_components;
+  Tangent_spaces m_spaces;
+  Dual_connection m_dual;
+  mutable std::mutex m_change_mutex;
+  mutable std::unique_ptr<Face_connection_change> m_change;  // made by the first prescription
+};
+
+template <typename SparseSolver>
+Face_field_engine<SparseSolver>::Face_field_engine(Indexed_mesh mesh, double mollification)
+  : m_impl(new Impl(std::move(mesh), mollification))
+{
+}
+
+template <typename SparseSolver>
+Face_field_engine<SparseSolver>::~Face_field_engine() = default;
+
+template <typename SparseSolver>
+Face_direction_field_result Face_field_engine<SparseSolver>::compute(const Face_field_request& request,
+                                                                     const SparseSolver* solver,
+                                                                     Face_field_answer& answer) const
+{
+  return m_impl->compute(request, solver, answer);
+}
+
+template <typename SparseSolver>
+const Indexed_mesh& Face_field_engine<SparseSolver>::mesh() const
+{
+  return m_impl->mesh();
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_FIELD_ENGINE_IMPL_H
