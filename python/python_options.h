@@ -35,6 +35,7 @@ struct Options
   std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
   std::optional<std::vector<std::pair<std::size_t, int> > > loop_turns;
   double intrinsic_mollification = 1e-6;
+  std::vector<Kernel::Vector_3> normals;  // per vertex (vertex_normal_map); empty: the angle-weighted ones
   py::object progress = py::none();  // None or a callable(fraction)
   unsigned int max_iterations = 1000;
   double tolerance = 1e-10;
@@ -69,6 +70,7 @@ struct Maps
   Mesh::Property_map<Vertex_index, bool> constrained;
   Mesh::Property_map<Vertex_index, double> magnitude;
   Mesh::Property_map<Edge_index, bool> feature;
+  Mesh::Property_map<Vertex_index, Kernel::Vector_3> normal;  // of the keyword normals
 
   // the outputs' maps; those of the options are added when an option first needs them
   explicit Maps(Mesh& mesh)
@@ -223,7 +225,8 @@ void read_enumerations(const py::dict& kw, Options& o)
 const char* const option_names[] = {"degree", "s", "align", "curvature_estimate", "boundary", "guidance",
                                     "alignment_weight", "lambda_t", "eigenvalue_bound", "constraints",
                                     "feature_edges", "feature_angle", "prescribed", "prescribed_loop_turns",
-                                    "intrinsic_mollification", "max_iterations", "tolerance", "seed", "progress"};
+                                    "intrinsic_mollification", "normals", "max_iterations", "tolerance", "seed",
+                                    "progress"};
 
 // The keyword arguments of compute() (an unknown one is a TypeError, as Python's own).
 Options read_options(const py::dict& kw, Mesh& mesh)
@@ -265,6 +268,16 @@ Options read_options(const py::dict& kw, Mesh& mesh)
   }
   if(kw.contains("intrinsic_mollification"))
     o.intrinsic_mollification = option_as<double>(kw["intrinsic_mollification"], "intrinsic_mollification", "a number");
+  if(given("normals"))
+  {
+    const Float_array n = rows_of_three(kw["normals"], mesh.number_of_vertices(), "normals");
+    const auto r = n.unchecked<2>();
+    for(py::ssize_t i = 0; i < n.shape(0); ++i)
+    {
+      o.normals.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+      if(o.normals.back() == CGAL::NULL_VECTOR) refuse("normals row " + std::to_string(i) + " is zero");
+    }
+  }
   if(given("progress"))
   {
     if(!PyCallable_Check(kw["progress"].ptr())) throw py::type_error("progress must be a callable(fraction) or None");
@@ -285,6 +298,11 @@ Options read_options(const py::dict& kw, Mesh& mesh)
 // The maps take the options' values (the mesh's own maps, reset at every call).
 void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
 {
+  if(!o.normals.empty())
+  {
+    maps.normal = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_normal").first;
+    for(Vertex_index v : mesh.vertices()) put(maps.normal, v, o.normals[static_cast<std::size_t>(v)]);
+  }
   if(!o.guidance.empty())
   {
     maps.guidance = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_guidance").first;

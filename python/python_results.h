@@ -127,15 +127,17 @@ public:
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(m_busy);
       fill_maps(o, m_mesh, m_maps);
-      if(as_free_function)
+      if(as_free_function && o.normals.empty())
         report = compute_field([&](const auto& np) {
           return SMDF::compute_globally_optimal_directions(m_mesh, m_maps.direction, np);
         }, o, m_maps, std::back_inserter(singular), progress);
       else
       {
-        if(!m_field) m_field = std::make_unique<Field>(m_mesh);
+        // the class's construction takes the mesh options (a free function call with normals: the class once)
+        if(!m_field || o.intrinsic_mollification != m_mollification || o.normals != m_normals) make_field(o);
         report = compute_field([&](const auto& np) { return m_field->compute(m_maps.direction, np); }, o, m_maps,
                                std::back_inserter(singular), progress);
+        if(as_free_function) m_field.reset();
       }
       values = copy_field(m_mesh, m_maps);  // still under the lock: the maps are this call's
     }
@@ -178,11 +180,25 @@ public:
   }
 
 private:
+  // The C++ class over the mesh with the options of its construction (the
+  // mesh work is redone when they change).
+  void make_field(const Options& o)
+  {
+    m_field.reset();
+    const auto np = CGAL::parameters::intrinsic_mollification(o.intrinsic_mollification);
+    if(o.normals.empty()) m_field = std::make_unique<Field>(m_mesh, np);
+    else m_field = std::make_unique<Field>(m_mesh, np.vertex_normal_map(m_maps.normal));
+    m_mollification = o.intrinsic_mollification;
+    m_normals = o.normals;
+  }
+
   static constexpr std::uint64_t constructed_signature = 0x534d44465f6f626aULL;
   std::uint64_t m_signature = constructed_signature;
   Mesh m_mesh;
   Maps m_maps;
   std::unique_ptr<Field> m_field;
+  double m_mollification = 1e-6;           // of m_field's construction
+  std::vector<Kernel::Vector_3> m_normals;  // of m_field's construction (empty: the angle-weighted ones)
   std::mutex m_busy;
 };
 
@@ -250,6 +266,8 @@ const char* const compute_doc =
   "  prescribed_loop_turns=None   (m, 2) loop, turns: with prescribed, the field's turns along the mesh's loops\n"
   "                      (Result.loop_turns gives a field's own)\n"
   "  intrinsic_mollification=1e-6   relative margin of the fix for degenerate triangles (0: off)\n"
+  "  normals=None        (|V|, 3): the normal of each vertex's tangent plane (C++ vertex_normal_map; default:\n"
+  "                      the angle-weighted face normals)\n"
   "  max_iterations=1000, tolerance=1e-10, seed=0   the eigen-solve\n"
   "  progress=None       a callable(fraction) told the fraction done (0 to 1) at each step and solve;\n"
   "                      an exception it raises (or Ctrl-C) stops the computation and is raised\n"

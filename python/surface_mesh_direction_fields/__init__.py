@@ -21,7 +21,7 @@ def _keywords(*, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
               alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False, constraints: Any = None,
               boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
               prescribed: Any = None, prescribed_loop_turns: Any = None, intrinsic_mollification: float = 1e-6,
-              max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
+              normals: Any = None, max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
               progress: Optional[Callable[[float], None]] = None) -> None:
     """The keyword arguments of a computation, with the defaults the C++ side applies."""
 

@@ -45,8 +45,8 @@ def compute_globally_optimal_directions(
     constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
     feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
     prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
-    intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
-    seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
+    intrinsic_mollification: float = 1e-6, normals: Optional[npt.ArrayLike] = None, max_iterations: int = 1000,
+    tolerance: float = 1e-10, seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
 
 class DirectionField:
     def __init__(self, V: npt.ArrayLike, F: npt.ArrayLike) -> None: ...
@@ -57,8 +57,9 @@ class DirectionField:
         constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
         feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
         prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
-        intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
-        seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
+        intrinsic_mollification: float = 1e-6, normals: Optional[npt.ArrayLike] = None,
+        max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
+        progress: Optional[Callable[[float], None]] = None) -> Result: ...
     @property
     def construction_ms(self) -> float: ...
 

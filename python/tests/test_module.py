@@ -317,6 +317,31 @@ def test_intrinsic_mollification_keyword():
         smdf.compute_globally_optimal_directions(V, F, degree=1, intrinsic_mollification=0.0)
 
 
+def test_mesh_options_of_the_class():
+    """DirectionField.compute() honours the options of the C++ class's construction: intrinsic_mollification
+    (the mesh work is redone when it changes) and normals (C++ vertex_normal_map)."""
+    V, F = octahedron()
+    V[4] = (V[0] + V[2]) / 2  # a face of zero area: mollified by default, refused with 0
+    field = smdf.DirectionField(V, F)
+    assert field.compute(degree=1).index_sum == 2
+    with pytest.raises(ValueError, match=r"zero"):
+        field.compute(degree=1, intrinsic_mollification=0.0)
+    assert field.compute(degree=1).index_sum == 2
+    V, F = sphere()
+    free = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    unit = V / np.linalg.norm(V, axis=1)[:, None]  # the sphere's exact normals
+    given = smdf.compute_globally_optimal_directions(V, F, degree=4, normals=unit)
+    kept = smdf.DirectionField(V, F)
+    assert np.array_equal(kept.compute(degree=4, normals=unit).directions, given.directions)
+    assert np.abs((given.directions * unit).sum(axis=1)).max() < 1e-12  # tangent to the given normals
+    assert not np.array_equal(given.directions, free.directions)
+    assert given.index_sum == free.index_sum == 8
+    with pytest.raises(ValueError, match="normals row 3 is zero"):
+        smdf.compute_globally_optimal_directions(V, F, normals=np.where(np.arange(len(V))[:, None] == 3, 0.0, unit))
+    with pytest.raises(ValueError, match="shape"):
+        smdf.compute_globally_optimal_directions(V, F, normals=unit[:-1])
+
+
 def test_progress_and_stopping():
     V, F = sphere(4)
     fractions = []

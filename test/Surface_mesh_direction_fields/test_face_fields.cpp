@@ -299,7 +299,7 @@ std::pair<Vertex_index, Vertex_index> free_neighbours(const Mesh& mesh, const Fa
   return {Vertex_index(), Vertex_index()};
 }
 
-void check_prescriptions()
+void check_prescriptions_on_spheres()
 {
   Mesh sphere;
   make_icosphere(sphere, 3);
@@ -337,7 +337,13 @@ void check_prescriptions()
                  name + ": indices +-3n side by side need jumps the principal matching does not read");
     check_shows(sphere, n, strong, name + ", indices +-3n side by side", false);
   }
-  // the class keeps its trees and factorization between prescriptions: the same fields as the free function
+}
+
+// The class keeps its trees and factorization between prescriptions: the same fields as the free function.
+void check_prescription_class()
+{
+  Mesh sphere;
+  make_icosphere(sphere, 3);
   {
     const SMDF::Globally_optimal_face_direction_field<Mesh> object(sphere);
     auto kept = sphere.add_property_map<Face_index, Vector_3>("f:kept").first;
@@ -366,6 +372,11 @@ void check_prescriptions()
     report.check(worst == 0., "the class's kept factorization gives the free function's directions (worst " +
                                 std::to_string(worst) + ")");
   }
+}
+
+// Genus 1 and a boundary.
+void check_prescriptions_on_torus_and_disk()
+{
   Mesh torus;
   make_torus(torus, 3., 1., 24, 12);
   check_shows(torus, 4, {}, "torus, no singularity");
@@ -375,6 +386,13 @@ void check_prescriptions()
   check_shows(disk, 4, {{Vertex_index(0), 1}}, "disk, one singularity");
   check_shows(disk, 4, {{Vertex_index(0), -2}, {Vertex_index(1), 1}}, "disk, two singularities");
 
+}
+
+void check_prescription_refusals()
+{
+  Mesh sphere, disk;
+  make_icosphere(sphere, 3);
+  make_disk(disk, 8);
   auto dirs = sphere.add_property_map<Face_index, Vector_3>("f:prescribed").first;
   auto refused = [&](const Mesh& mesh, const Vertex_indices& k, const std::string& what) {
     bool thrown = false;
@@ -409,6 +427,9 @@ int main()
   check_corner_numbering_invariance();
   check_constraints_and_refusals();
   check_features();
-  check_prescriptions();
+  check_prescriptions_on_spheres();
+  check_prescription_class();
+  check_prescriptions_on_torus_and_disk();
+  check_prescription_refusals();
   return report.finish();
 }
