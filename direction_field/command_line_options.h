@@ -4,6 +4,7 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_COMMAND_LINE_OPTIONS_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_COMMAND_LINE_OPTIONS_H
 
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
 #include "file_io/messages.h"
@@ -25,7 +26,7 @@
 struct Options
 {
   std::string mesh;
-  int degree = 4;
+  int degree = CGAL::Surface_mesh_direction_fields::default_degree;
   double s = 0.;
   std::string directions, singularities, png, json_file;
   std::string vtk, vtk_singularities, ply, rosy, ffield, singularity_list, streamlines, mesh_out;

@@ -246,6 +246,22 @@ void bind_face_field(py::module_& m)
     .def_property_readonly("prescribed", [](const Face_field_result& r) { return r.report.prescribed; })
     .def_property_readonly("non_principal_jumps",
                            [](const Face_field_result& r) { return r.report.number_of_non_principal_jumps; })
+    .def(py::pickle(
+      [](const Face_field_result& r) {
+        return py::make_tuple(r.face_directions, r.pd2, r.singular_vertices, r.matching, r.mismatch,
+                              face_report_state(r.report));
+      },
+      [](const py::tuple& state) {
+        State_reader read(state);
+        Face_field_result r;
+        r.face_directions = read.next<py::array_t<double> >();
+        r.pd2 = read.next<py::array_t<double> >();
+        r.singular_vertices = read.next<py::array_t<long long> >();
+        r.matching = read.next<py::array_t<long long> >();
+        r.mismatch = read.next<py::array_t<long long> >();
+        r.report = face_report_from(read.next<py::tuple>());
+        return r;
+      }))
     .def("__repr__", [](const Face_field_result& r) {
       return "<FaceField n=" + std::to_string(r.report.degree) + ", " + std::to_string(r.face_directions.shape(0)) +
              " faces, " + std::to_string(r.singular_vertices.shape(0)) + " singular vertices>";

@@ -20,7 +20,7 @@ namespace {
 // Every option of compute(), read from Python's keyword arguments.
 struct Options
 {
-  int degree = 4;
+  int degree = CGAL::Surface_mesh_direction_fields::default_degree;
   double s = 0.;
   SMDF::Principal_curvature_alignment align = SMDF::Principal_curvature_alignment::NONE;
   SMDF::Principal_curvature_estimate curvature_estimate = SMDF::Principal_curvature_estimate::QUADRIC_FIT;

@@ -5,12 +5,15 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_RESULTS_H
 
 #include "python_options.h"
+#include "python_pickling.h"
+
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 
 namespace {
 
 struct Result
 {
-  py::array_t<double> directions, magnitudes;
+  py::array_t<double> directions, magnitudes, normals, tangent_frames;
   py::array_t<long long> singular_faces, loop_turns;
   std::vector<double> eigenvalues;
   SMDF::Direction_field_result report;
@@ -21,12 +24,77 @@ struct Result
 // cannot overwrite them before they become arrays.
 struct Field_values
 {
-  std::vector<double> directions, magnitudes;  // 3 and 1 per vertex
+  std::vector<double> directions, magnitudes, normals, frames;  // 3, 1, 3 and 6 per vertex
   std::vector<std::pair<Face_index, int> > singular;
   SMDF::Direction_field_result report;
 };
 
-Field_values copy_field(const Mesh& mesh, const Maps& maps)
+// The unit tangent vector along v's reference edge (user manual,
+// "Conventions"): on the boundary the boundary edge with the surface on its
+// left, inside the edge to the neighbour of smallest index; zero for an
+// isolated vertex.
+SMDF::internal::Vec3 reference_edge(const Mesh& mesh, const std::vector<SMDF::internal::Vec3>& points, Vertex_index v,
+                                    const SMDF::internal::Vec3& normal)
+{
+  using SMDF::internal::Vec3;
+  using SMDF::internal::operator*;
+  using SMDF::internal::operator-;
+  const Mesh::Halfedge_index incoming = mesh.halfedge(v);
+  if(incoming == Mesh::null_halfedge()) return Vec3{0., 0., 0.};
+  // a border vertex's halfedge is a border one (Surface_mesh keeps it so)
+  Vertex_index w = mesh.source(incoming);
+  if(!mesh.is_border(incoming))
+    for(auto h : CGAL::halfedges_around_target(incoming, mesh)) w = (std::min)(w, mesh.source(h));
+  Vec3 r = points[std::size_t(w)] - points[std::size_t(v)];
+  const double largest = (std::max)({std::abs(r[0]), std::abs(r[1]), std::abs(r[2])});
+  if(largest > 0. && std::isfinite(largest)) r = (1. / largest) * r;  // no overflow in the squares
+  return SMDF::internal::normalized(r - SMDF::internal::dot(r, normal) * normal);
+}
+
+// The normals the directions turn about (made orthogonal to each direction,
+// as make_direction_field_data() makes them for the files) and each vertex's
+// tangent frame: e1 along the reference edge, e2 = normal x e1.
+void copy_normals_and_frames(const Mesh& mesh, const Maps& maps, bool user_normals, Field_values& values)
+{
+  using SMDF::internal::Vec3;
+  using SMDF::internal::operator*;
+  using SMDF::internal::operator-;
+  // in parallel, as the engine's passes: Surface_mesh's indices are 0 to n - 1 (no removed element)
+  std::vector<Vec3> points(mesh.number_of_vertices()), normals;
+  SMDF::internal::parallel_for_each_index(points.size(), [&](std::size_t i) {
+    const Kernel::Point_3& p = mesh.point(Vertex_index(static_cast<Mesh::size_type>(i)));
+    points[i] = {p.x(), p.y(), p.z()};
+  });
+  if(user_normals)
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Kernel::Vector_3 n = get(maps.normal, v);
+      normals.push_back({n.x(), n.y(), n.z()});
+    }
+  else
+  {
+    std::vector<std::array<std::size_t, 3> > faces(mesh.number_of_faces());
+    SMDF::internal::parallel_for_each_index(faces.size(), [&](std::size_t f) {
+      const Mesh::Halfedge_index h = mesh.halfedge(Face_index(static_cast<Mesh::size_type>(f)));
+      // in the order of vertices_around_face(), as make_direction_field_data() lists them: the same sums
+      faces[f] = {std::size_t(mesh.target(h)), std::size_t(mesh.target(mesh.next(h))), std::size_t(mesh.source(h))};
+    });
+    normals = SMDF::internal::angle_weighted_normals(points, faces);
+  }
+  values.normals.resize(3 * points.size());
+  values.frames.resize(6 * points.size());
+  SMDF::internal::parallel_for_each_index(points.size(), [&](std::size_t i) {
+    const Vec3 d{values.directions[3 * i], values.directions[3 * i + 1], values.directions[3 * i + 2]};
+    const Vec3 normal = SMDF::internal::normalized(normals[i] - SMDF::internal::dot(normals[i], d) * d);
+    const Vec3 e1 = reference_edge(mesh, points, Vertex_index(static_cast<Mesh::size_type>(i)), normal);
+    const Vec3 e2 = SMDF::internal::cross(normal, e1);
+    std::copy(normal.begin(), normal.end(), values.normals.begin() + static_cast<std::ptrdiff_t>(3 * i));
+    std::copy(e1.begin(), e1.end(), values.frames.begin() + static_cast<std::ptrdiff_t>(6 * i));
+    std::copy(e2.begin(), e2.end(), values.frames.begin() + static_cast<std::ptrdiff_t>(6 * i + 3));
+  });
+}
+
+Field_values copy_field(const Mesh& mesh, const Maps& maps, bool user_normals)
 {
   Field_values values;
   values.directions.reserve(3 * mesh.number_of_vertices());
@@ -37,6 +105,7 @@ Field_values copy_field(const Mesh& mesh, const Maps& maps)
     values.directions.insert(values.directions.end(), {x.x(), x.y(), x.z()});
     values.magnitudes.push_back(get(maps.magnitude, v));
   }
+  copy_normals_and_frames(mesh, maps, user_normals, values);
   return values;
 }
 
@@ -49,6 +118,10 @@ Result make_result(Field_values values)
   r.magnitudes = py::array_t<double>(nv);
   std::copy(values.directions.begin(), values.directions.end(), r.directions.mutable_data());
   std::copy(values.magnitudes.begin(), values.magnitudes.end(), r.magnitudes.mutable_data());
+  r.normals = py::array_t<double>({nv, py::ssize_t(3)});
+  r.tangent_frames = py::array_t<double>({nv, py::ssize_t(2), py::ssize_t(3)});
+  std::copy(values.normals.begin(), values.normals.end(), r.normals.mutable_data());
+  std::copy(values.frames.begin(), values.frames.end(), r.tangent_frames.mutable_data());
   const auto& singular = values.singular;
   r.singular_faces = py::array_t<long long>({static_cast<py::ssize_t>(singular.size()), py::ssize_t(2)});
   auto s = r.singular_faces.mutable_unchecked<2>();
@@ -139,7 +212,7 @@ public:
                                std::back_inserter(singular), progress);
         if(as_free_function) m_field.reset();
       }
-      values = copy_field(m_mesh, m_maps);  // still under the lock: the maps are this call's
+      values = copy_field(m_mesh, m_maps, !o.normals.empty());  // still under the lock: the maps are this call's
     }
     catch(const SMDF::Invalid_input_error& e)
     {
@@ -212,6 +285,47 @@ py::dict timings_of(const SMDF::Direction_field_result& r)
   return t;
 }
 
+// All n directions of every vertex, as the files show them (the first turned
+// about the normal by the rotation of make_direction_field_data()).
+py::array_t<double> all_directions(const Result& r)
+{
+  const py::ssize_t nv = r.directions.shape(0), n = r.report.degree;
+  py::array_t<double> all({nv, n, py::ssize_t(3)});
+  auto a = all.mutable_unchecked<3>();
+  const auto d = r.directions.unchecked<2>();
+  const auto normal = r.normals.unchecked<2>();
+  for(py::ssize_t v = 0; v < nv; ++v)
+    for(py::ssize_t k = 0; k < n; ++k)
+    {
+      const SMDF::internal::Vec3 turned = SMDF::internal::rotated(
+        {d(v, 0), d(v, 1), d(v, 2)}, {normal(v, 0), normal(v, 1), normal(v, 2)},
+        2. * CGAL_PI * static_cast<double>(k) / static_cast<double>(n));
+      for(int c = 0; c < 3; ++c) a(v, k, c) = turned[static_cast<std::size_t>(c)];
+    }
+  return all;
+}
+
+py::tuple result_state(const Result& r)
+{
+  return py::make_tuple(r.directions, r.magnitudes, r.normals, r.tangent_frames, r.singular_faces, r.loop_turns,
+                        r.eigenvalues, report_state(r.report));
+}
+
+Result result_from(const py::tuple& state)
+{
+  State_reader read(state);
+  Result r;
+  r.directions = read.next<py::array_t<double> >();
+  r.magnitudes = read.next<py::array_t<double> >();
+  r.normals = read.next<py::array_t<double> >();
+  r.tangent_frames = read.next<py::array_t<double> >();
+  r.singular_faces = read.next<py::array_t<long long> >();
+  r.loop_turns = read.next<py::array_t<long long> >();
+  r.eigenvalues = read.next<std::vector<double> >();
+  r.report = report_from(read.next<py::tuple>());
+  return r;
+}
+
 void bind_result(py::module_& m)
 {
   py::class_<Result>(m, "Result", "One computed field: numpy arrays and the solver's report.")
@@ -242,6 +356,14 @@ void bind_result(py::module_& m)
       return chi;
     })
     .def_property_readonly("timings", [](const Result& r) { return timings_of(r.report); }, "milliseconds")
+    .def_readonly("normals", &Result::normals, "the unit normal per vertex about which the directions turn, (|V|, 3)")
+    .def_readonly("tangent_frames", &Result::tangent_frames,
+                  "(|V|, 2, 3): per vertex e1 along its reference edge (to its neighbour of smallest index; on the "
+                  "boundary the boundary edge with the surface on its left) in the tangent plane, e2 = normal x e1")
+    .def_property_readonly("all_directions", &all_directions,
+                           "(|V|, n, 3): the n directions per vertex, the k-th the first turned by 2 pi k / n about "
+                           "the normal (made when read: n |V| 3 numbers)")
+    .def(py::pickle(&result_state, &result_from))
     .def("__repr__", [](const Result& r) {
       return "<Result degree=" + std::to_string(r.report.degree) + ", " + std::to_string(r.directions.shape(0)) +
              " vertices, " + std::to_string(r.singular_faces.shape(0)) + " singular faces, index_sum=" +

@@ -19,6 +19,10 @@ class Result:
     singular_faces: npt.NDArray[np.int64]    # (k, 2): face, k (index k / n)
     loop_turns: npt.NDArray[np.int64]        # (m, 2): loop, turns (give back as prescribed_loop_turns)
     eigenvalues: List[float]                 # per component
+    normals: npt.NDArray[np.float64]         # (|V|, 3) unit normals the directions turn about
+    tangent_frames: npt.NDArray[np.float64]  # (|V|, 2, 3): e1 along the reference edge, e2 = normal x e1
+    @property
+    def all_directions(self) -> npt.NDArray[np.float64]: ...  # (|V|, n, 3)
     @property
     def degree(self) -> int: ...
     @property

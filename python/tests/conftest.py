@@ -1,6 +1,8 @@
 """Options of the module's tests, and CTest's SKIP: a run whose tests all passed
 but left some out because the program or the shared meshes were missing exits
 77 (test_python_module's SKIP_RETURN_CODE), never a silent pass."""
+import os
+
 import pytest
 
 # the start of every skip reason that means "an input of the test is missing"
@@ -12,6 +14,22 @@ def pytest_addoption(parser):
     parser.addoption("--direction-field", default="", help="the command-line program, to compare with")
     parser.addoption("--shared", default="", help="the shared mesh folder (tests that need it skip without it)")
     parser.addoption("--installed-in", default="", help="a virtual environment the package must be imported from")
+
+
+@pytest.fixture
+def program(request):
+    path = request.config.getoption("--direction-field")
+    if not path:
+        pytest.skip(MISSING_INPUT + "no direction_field given")
+    return path
+
+
+@pytest.fixture
+def shared(request):
+    folder = request.config.getoption("--shared")
+    if not folder or not os.path.isdir(folder):
+        pytest.skip(MISSING_INPUT + "no shared meshes")
+    return folder
 
 
 def pytest_configure(config):

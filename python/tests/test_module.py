@@ -11,64 +11,12 @@ import pytest
 
 import surface_mesh_direction_fields as smdf
 from conftest import MISSING_INPUT
+from shapes import octahedron, sphere, torus
 
 # The program lets the factorization set OpenBLAS's threads; with the same
 # setting the module gives the same digits (the module's default is off).
 THREAD_CONTROL_BY_DEFAULT = smdf.openblas_thread_control()
 smdf.set_openblas_thread_control(True)
-
-
-def octahedron():
-    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float64)
-    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
-    return V, F
-
-
-def sphere(levels=3):
-    V, F = octahedron()
-    points, faces = [tuple(p) for p in V], [tuple(f) for f in F]
-    for _ in range(levels):
-        middle, new = {}, []
-        def mid(a, b):
-            key = (min(a, b), max(a, b))
-            if key not in middle:
-                p = np.add(points[a], points[b]) / 2
-                points.append(tuple(p / np.linalg.norm(p)))
-                middle[key] = len(points) - 1
-            return middle[key]
-        for a, b, c in faces:
-            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
-            new += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
-        faces = new
-    return np.array(points), np.array(faces, dtype=np.int64)
-
-
-def torus(n=24, m=12, R=1.0, r=0.4):
-    V = np.array([[(R + r * math.cos(2 * math.pi * j / m)) * math.cos(2 * math.pi * i / n),
-                   (R + r * math.cos(2 * math.pi * j / m)) * math.sin(2 * math.pi * i / n),
-                   r * math.sin(2 * math.pi * j / m)] for i in range(n) for j in range(m)])
-    F = []
-    for i in range(n):
-        for j in range(m):
-            a, b, c, d = i * m + j, ((i + 1) % n) * m + j, ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
-            F += [(a, b, c), (a, c, d)]
-    return V, np.array(F)
-
-
-@pytest.fixture
-def program(request):
-    path = request.config.getoption("--direction-field")
-    if not path:
-        pytest.skip(MISSING_INPUT + "no direction_field given")
-    return path
-
-
-@pytest.fixture
-def shared(request):
-    folder = request.config.getoption("--shared")
-    if not folder or not os.path.isdir(folder):
-        pytest.skip(MISSING_INPUT + "no shared meshes")
-    return folder
 
 
 def test_version_and_docs():
@@ -386,6 +334,34 @@ def test_ctrl_c_interrupts_a_long_computation(shared):
     assert 1.0 not in seen  # stopped before the end
     r = smdf.compute_globally_optimal_directions(*sphere(), degree=4)
     assert r.index_sum == 8
+
+
+def test_a_factorization_asks_the_progress_callable_and_stops(shared):
+    """The factorization, the longest step without a solve, asks the progress callable (with the fraction
+    reached before it) every few milliseconds: an exception raised there stops it, and the object computes
+    its next field as a fresh one."""
+    path = os.path.join(shared, "nefertiti_sub4.off")
+    if not os.path.exists(path):
+        pytest.skip(MISSING_INPUT + "nefertiti_sub4.off")
+    V, F, _ = smdf.read_mesh(path)
+    seen = []
+    smdf.compute_globally_optimal_directions(V, F, degree=4, progress=seen.append)
+    assert seen.count(0.2) > 4  # asked again and again during the factorization (0.2: before it)
+
+    class Stop(Exception):
+        pass
+
+    def stop_in_factorization(fraction):
+        seen.append(fraction)
+        if seen.count(0.2) == 4:
+            raise Stop()
+    field = smdf.DirectionField(V, F)
+    seen.clear()
+    with pytest.raises(Stop):
+        field.compute(degree=4, progress=stop_in_factorization)
+    assert max(seen) == 0.2
+    again = field.compute(degree=4)
+    assert np.array_equal(again.directions, smdf.DirectionField(V, F).compute(degree=4).directions)
 
 
 def test_field_arrays_all_directions_and_normals():

@@ -30,6 +30,7 @@
 #include "generated_meshes.h"
 #include "test_support.h"
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <iterator>
@@ -158,7 +159,8 @@ static void check_torus_and_sphere(Test_report& report)
   make_icosphere(sphere, 3);
   auto sdir = direction_map(sphere);
   sing.clear();
-  r = SMDF::compute_globally_optimal_directions(sphere, sdir, params::singularities_output_iterator(std::back_inserter(sing)));
+  r = SMDF::compute_globally_optimal_directions(sphere, sdir,
+                                              params::degree(1).singularities_output_iterator(std::back_inserter(sing)));
   int sum = 0;
   for(const auto& fk : sing) sum += fk.second;
   report.check(r.index_sum == 2 && sum == 2, "sphere, n = 1: index sum 2");
@@ -417,6 +419,52 @@ static void check_models_and_solvers(Test_report& report)
                        worst_case);
 }
 
+// Without the named parameter degree, both functions compute cross fields
+// (default_degree, the program's and the Python module's default too).
+static void check_default_degree(Test_report& report)
+{
+  Mesh sphere;
+  make_icosphere(sphere, 2);
+  auto dir = direction_map(sphere);
+  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(sphere, dir);
+  auto fdir = sphere.add_property_map<Mesh::Face_index, Vector_3>("f:direction").first;
+  const SMDF::Face_direction_field_result rf = SMDF::compute_globally_optimal_face_directions(sphere, fdir);
+  report.check(SMDF::default_degree == 4 && r.degree == 4 && r.index_sum == 8 && rf.degree == 4 && rf.index_sum == 8,
+               "the default degree is 4 (a cross field: index sum 8 on a sphere)");
+}
+
+// The field depends on the vertex and face numbering only (user manual,
+// "Conventions"): moving every face's halfedge(f) and every interior vertex's
+// halfedge(v) gives the same digits, for the vertex field, the face field and
+// its matching, on a closed and an open mesh.
+static void check_halfedge_independence(Test_report& report, const Mesh& base, const std::string& name)
+{
+  Mesh moved = base;
+  for(auto f : moved.faces()) moved.set_halfedge(f, moved.next(moved.halfedge(f)));
+  for(Vertex_index v : moved.vertices())
+    if(!moved.is_border(v)) moved.set_halfedge(v, moved.opposite(moved.next(moved.halfedge(v))));
+  std::array<const Mesh*, 2> meshes = {&base, &moved};
+  std::array<std::vector<Vector_3>, 2> vertex_dirs, face_dirs;
+  std::array<std::vector<int>, 2> jumps;
+  for(std::size_t i = 0; i < 2; ++i)
+  {
+    Mesh m = *meshes[i];
+    auto dir = direction_map(m);
+    SMDF::compute_globally_optimal_directions(m, dir, params::degree(4));
+    for(Vertex_index v : m.vertices()) vertex_dirs[i].push_back(dir[v]);
+    auto fdir = m.add_property_map<Mesh::Face_index, Vector_3>("f:direction").first;
+    auto matching = m.add_property_map<Mesh::Edge_index, int>("e:matching", 0).first;
+    SMDF::compute_globally_optimal_face_directions(m, fdir, params::degree(4).edge_matching_map(matching));
+    for(auto f : m.faces()) face_dirs[i].push_back(fdir[f]);
+    for(auto e : m.edges())  // the jump read along the edge's halfedge of the base mesh
+      jumps[i].push_back(m.halfedge(e) == base.halfedge(e) ? matching[e] : -matching[e]);
+  }
+  const bool same_vertex_field = vertex_dirs[0] == vertex_dirs[1];
+  const bool same_face_field = face_dirs[0] == face_dirs[1] && jumps[0] == jumps[1];
+  report.check(same_vertex_field, name + ": halfedge(f), halfedge(v) moved: the same vertex field, bit for bit");
+  report.check(same_face_field, name + ": halfedge(f), halfedge(v) moved: the same face field and matching");
+}
+
 int main()
 {
   Test_report report("fields");
@@ -469,8 +517,18 @@ int main()
       lumpy.point(v) = CGAL::ORIGIN + (1. + 0.2 * std::sin(3. * p.x() + 1.) * std::cos(2. * p.y()) + 0.1 * p.z()) * p;
     }
     check_invariance(report, lumpy, "lumpy sphere");
+    check_halfedge_independence(report, lumpy, "lumpy sphere");
+    Mesh disk;
+    make_disk(disk, 12);
+    for(Vertex_index v : disk.vertices())  // a curved cap
+    {
+      const Point_3 p = disk.point(v);
+      disk.point(v) = Point_3(p.x(), p.y(), 0.3 * std::sin(2. * p.x()) * std::cos(p.y()));
+    }
+    check_halfedge_independence(report, disk, "disk");
   }
   check_bad_input(report);
   check_components_and_outputs(report);
+  check_default_degree(report);
   return report.finish();
 }

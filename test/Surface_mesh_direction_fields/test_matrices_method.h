@@ -41,11 +41,11 @@ static void check_connection(Test_report& report, const std::string& name, const
   for(auto h : mesh.halfedges())
   {
     if(mesh.is_border(h) || mesh.is_border(mesh.opposite(h))) continue;
-    auto corner_of = [&](Mesh::Halfedge_index g) {
-      auto f = mesh.face(g);
+    auto corner_of = [&](Mesh::Halfedge_index g) {  // the corner whose first side is g
+      const std::size_t f = std::size_t(mesh.face(g));
       std::size_t c = 0;
-      for(auto k = mesh.halfedge(f); k != g; k = mesh.next(k)) ++c;
-      return 3 * std::size_t(f) + c;
+      while(std::size_t(m.faces[f][c]) != std::size_t(mesh.source(g))) ++c;
+      return 3 * f + c;
     };
     const Complex r = con.transport[corner_of(h)], r_back = con.transport[corner_of(mesh.opposite(h))];
     worst_opposite = (std::max)(worst_opposite, std::abs(r_back - std::conj(r)));

@@ -30,6 +30,11 @@ the integer index `k` of a face is at most about `3n/2`, so it and the sums of
 */
 constexpr int maximum_degree = 1000000;
 
+/// \ingroup PkgSurfaceMeshDirectionFieldsRef
+/// The degree `n` when the named parameter `degree` is not given: 4, a cross field, the field quad meshers
+/// take. The same default holds in the command-line program (`--degree`) and in the Python module (`degree=`).
+constexpr int default_degree = 4;
+
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 

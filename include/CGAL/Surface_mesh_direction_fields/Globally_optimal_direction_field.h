@@ -298,10 +298,14 @@ public:
   /// \endcond
 
 private:
-  // The halfedge along corner ci's side.
+  // The halfedge along corner ci's side: corners are counted from the face's
+  // halfedge whose source has the smallest index (make_indexed_mesh()).
   halfedge_descriptor halfedge_of_corner(std::size_t ci) const
   {
-    halfedge_descriptor h = halfedge(m_face_of_index[internal::Indexed_mesh::face_of_corner(ci)], *m_tmesh);
+    const halfedge_descriptor start = halfedge(m_face_of_index[internal::Indexed_mesh::face_of_corner(ci)], *m_tmesh);
+    halfedge_descriptor h = start;
+    for(halfedge_descriptor g = next(start, *m_tmesh); g != start; g = next(g, *m_tmesh))
+      if(m_index_of_vertex(source(g, *m_tmesh)) < m_index_of_vertex(source(h, *m_tmesh))) h = g;
     for(std::size_t c = 0; c < ci % 3; ++c) h = next(h, *m_tmesh);
     return h;
   }

@@ -259,7 +259,8 @@ template <typename TriangleMesh, typename VertexDirectionMap, typename Singulari
 void draw(const TriangleMesh& tmesh, VertexDirectionMap direction_map, const SingularityRange& singularities,
           const NamedParameters& np = parameters::default_values())
 {
-  const int degree = parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree), 1);
+  const int degree = parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree),
+                                                  Surface_mesh_direction_fields::default_degree);
   const Surface_mesh_direction_fields::Direction_field_data data =
     Surface_mesh_direction_fields::make_direction_field_data(tmesh, direction_map, degree, singularities, np);
   draw(data);

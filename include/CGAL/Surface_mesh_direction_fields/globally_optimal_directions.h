@@ -73,7 +73,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                           `maximum_degree` (one million: the integer index `k` of a face,
                           at most about `3n/2`, and the sums of `k` stay exact)}
     \cgalParamType{`int`}
-    \cgalParamDefault{`1`}
+    \cgalParamDefault{`default_degree`, 4: a cross field}
   \cgalParamNEnd
   \cgalParamNBegin{smoothness_parameter}
     \cgalParamDescription{the energy parameter `s` in \f$ [-1, 1] \f$: `-1` anti-holomorphic,
@@ -250,8 +250,9 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
-    \cgalParamDescription{called on the calling thread with the fraction done (0 to 1) at each step and before
-                          each solve of the iteration; returning `false` stops the computation with
+    \cgalParamDescription{called on the calling thread with the fraction done (0 to 1) at each step, before
+                          each solve of the iteration and every 20 ms during the default solver's
+                          factorizations; returning `false` stops the computation with
                           `Computation_interrupted`, the output maps unchanged (a way to honour Ctrl-C)}
     \cgalParamType{a callable `bool(double)`}
     \cgalParamDefault{none}
@@ -310,9 +311,10 @@ compute_globally_optimal_directions(const TriangleMesh& tmesh,
   typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
   typedef typename GetSolver<CGAL_NP_CLASS, Default_direction_field_solver>::type Sparse_solver;
   // Check n and s before any work on the mesh.
-  internal::check_field_parameters(parameters::choose_parameter(parameters::get_parameter(np, internal_np::degree), 1),
-                                   parameters::choose_parameter(
-                                     parameters::get_parameter(np, internal_np::smoothness_parameter), 0.));
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  internal::check_field_parameters(choose_parameter(get_parameter(np, internal_np::degree), default_degree),
+                                   choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
   Globally_optimal_direction_field<TriangleMesh, Geom_traits, Sparse_solver> field(tmesh, np);
   field.keep_factorizations(false);  // a single use: free each factorization once its component is done
   Direction_field_result result = field.compute(vertex_direction_map, np);

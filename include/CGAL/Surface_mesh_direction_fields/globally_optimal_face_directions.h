@@ -239,7 +239,7 @@ public:
                                       const NamedParameters& np = parameters::default_values()) const
   {
     using parameters::get_parameter;
-    internal::check_field_parameters(parameters::choose_parameter(get_parameter(np, internal_np::degree), 1),
+    internal::check_field_parameters(parameters::choose_parameter(get_parameter(np, internal_np::degree), default_degree),
                                      parameters::choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
     const internal::Point_to_array<GeomTraits> to_array{m_traits};
     const internal::Face_field_request request =
@@ -337,7 +337,7 @@ interior vertices that satisfy Poincare-Hopf are shown exactly.
   \cgalParamNBegin{degree}
     \cgalParamDescription{the degree `n` of the field, from 1 to `maximum_degree`}
     \cgalParamType{`int`}
-    \cgalParamDefault{`1`}
+    \cgalParamDefault{`default_degree`, 4: a cross field}
   \cgalParamNEnd
   \cgalParamNBegin{smoothness_parameter}
     \cgalParamDescription{must be `0` (the Dirichlet energy): the energies of other `s` do not carry over to faces}
@@ -447,7 +447,7 @@ compute_globally_optimal_face_directions(const TriangleMesh& tmesh, FaceDirectio
   using parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
   typedef typename GetSolver<CGAL_NP_CLASS, Default_direction_field_solver>::type Sparse_solver;
-  internal::check_field_parameters(choose_parameter(get_parameter(np, internal_np::degree), 1),
+  internal::check_field_parameters(choose_parameter(get_parameter(np, internal_np::degree), default_degree),
                                    choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
   const Globally_optimal_face_direction_field<TriangleMesh, Geom_traits, Sparse_solver> field(tmesh, np);
   Face_direction_field_result result = field.compute(face_direction_map, np);

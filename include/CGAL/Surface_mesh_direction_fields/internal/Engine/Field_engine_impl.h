@@ -72,6 +72,7 @@ public:
     typename Component_systems<SparseSolver>::Call_scope call(m_systems, {given_solver, request.distributed});
     SparseSolver linear_solver = given_solver != nullptr ? *given_solver : SparseSolver();
     Progress_report progress(request.progress);
+    const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
     progress.reached(0.);
 
     // 1. the hard constraints and the alignment request (manual, "Aligned and Constrained Fields")
@@ -180,6 +181,7 @@ private:
                                             Field_answer& answer)
   {
     Progress_report progress(request.progress);
+    const Scoped_interruption_check interruption(progress.keep_going_test());
     progress.reached(0.);
     Field_targets targets = field_targets(m_geometry, request);
     Prescribed_fields::refuse_other_requests(request);

@@ -97,10 +97,33 @@ inline std::vector<Complex> face_constraints(const Indexed_mesh& m, const Tangen
   return c;
 }
 
+// Curvature guidance on faces that a user's vectors join: scaled per
+// component to an area-weighted root mean square length of 1/10 (as
+// scale_to_tenth_rms() does on vertices).
+inline void scale_faces_to_tenth_rms(const Tangent_spaces& ts, const Components& comps, std::vector<Complex>& q)
+{
+  for(const Component& comp : comps.list)
+  {
+    double largest = 0., weighted = 0., total = 0.;
+    for(std::size_t f : comp.faces) largest = (std::max)(largest, std::abs(q[f]));
+    if(!(largest > 0.) || !std::isfinite(largest)) continue;
+    for(std::size_t f : comp.faces)
+    {
+      weighted += ts.face_area[f] * std::norm(q[f] / largest);
+      total += ts.face_area[f];
+    }
+    if(!(weighted > 0.) || !(total > 0.)) continue;
+    const double rms = largest * std::sqrt(weighted / total);
+    for(std::size_t f : comp.faces) q[f] /= 10. * rms;
+  }
+}
+
 // The guidance on faces: the curvature line field raised to n / 2 (keeping
-// its magnitude, the difference of the principal curvatures), plus the
-// user's vectors (projected, their length their weight).
-inline std::vector<Complex> face_guidance(const Indexed_mesh& m, const Tangent_spaces& ts,
+// its magnitude, the difference of the principal curvatures), and the
+// user's vectors (projected, their length their weight), which replace the
+// curvature guidance where they are given, a length of 1 ten times its
+// typical length.
+inline std::vector<Complex> face_guidance(const Indexed_mesh& m, const Tangent_spaces& ts, const Components& comps,
                                           const Face_field_request& request)
 {
   const int n = request.degree;
@@ -112,14 +135,15 @@ inline std::vector<Complex> face_guidance(const Indexed_mesh& m, const Tangent_s
     for(std::size_t f = 0; f < q.size(); ++f)
       q[f] = std::polar(std::abs(line[f]), 0.5 * static_cast<double>(n) * (std::arg(line[f]) + turn));
   }
-  if(!request.guidance.empty())
-    for(std::size_t f = 0; f < q.size(); ++f)
-    {
-      const Vec3 normal = face_frame(m, f)[1];
-      const Vec3& w = request.guidance[f];
-      const double length = norm(w - dot(w, normal) * normal);
-      if(length > 0.) q[f] += std::polar(length, static_cast<double>(n) * angle_in_face(m, f, w));
-    }
+  if(request.guidance.empty()) return q;
+  if(request.curvature != Principal_curvature_alignment::NONE) scale_faces_to_tenth_rms(ts, comps, q);
+  for(std::size_t f = 0; f < q.size(); ++f)
+  {
+    const Vec3 normal = face_frame(m, f)[1];
+    const Vec3& w = request.guidance[f];
+    const double length = norm(w - dot(w, normal) * normal);
+    if(length > 0.) q[f] = std::polar(length, static_cast<double>(n) * angle_in_face(m, f, w));
+  }
   return q;
 }
 
@@ -148,8 +172,9 @@ public:
     result.degree = request.degree;
     result.mollification = m_spaces.mollification / m_length_scale;
     Progress_report progress(request.progress);
+    const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
     progress.reached(0.);
-    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, request);
+    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, m_components, request);
     const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
     Eigen_solve_options options;
     options.max_iterations = request.max_iterations;
@@ -194,6 +219,7 @@ private:
     }
     check_face_prescription(request, result.components);
     Progress_report progress(request.progress);
+    const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
     progress.reached(0.);
     // the trees and the factored Laplacian of the faces, kept for the next prescription
     std::lock_guard<std::mutex> exclusive(m_change_mutex);
@@ -254,7 +280,7 @@ private:
   // guidance and constraints (n-th powers, weighted by the face areas).
   void turn_towards_guidance(const Face_field_request& request, std::vector<double>& theta) const
   {
-    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, request);
+    const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, m_components, request);
     const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
     for(const Component& comp : m_components.list)
     {

@@ -150,7 +150,7 @@ void read_field_parameters(const NamedParameters& np, Field_request& r)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  r.degree = choose_parameter(get_parameter(np, internal_np::degree), 1);
+  r.degree = choose_parameter(get_parameter(np, internal_np::degree), default_degree);
   r.s = choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.);
   check_field_parameters(r.degree, r.s);
   r.max_iterations =

@@ -221,6 +221,19 @@ template <typename SparseSolver>
 Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
                                       Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options);
 
+// The eigenvector is defined up to a global phase, which the iteration leaves
+// to rounding (the small dense eigenproblems of Rayleigh-Ritz choose a sign
+// each): the phase that makes <x, M u> real and positive, for the seed's
+// random vector x, is chosen instead. It moves continuously with u, so the
+// same seed gives the same field after a rigid motion or another summation
+// order (user manual, "Conventions").
+inline void fix_global_phase(const Complex_vector& Mu, unsigned int seed, Complex_vector& u)
+{
+  const Complex c = random_start_vector(Mu.size(), seed).dot(Mu);
+  if(!(std::abs(c) > 0.) || !std::isfinite(std::abs(c))) return;
+  u *= std::conj(c) / std::abs(c);
+}
+
 struct Coarse_estimate
 {
   Complex_vector vector;  // empty if there is no estimate
@@ -612,6 +625,7 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
 
   const double norm_u = std::sqrt((std::max)(0., u.dot(Mu).real()));
   result.vector = (norm_u > 0.) ? Complex_vector(u / norm_u) : u;
+  fix_global_phase(Mu, options.random_seed, result.vector);
   result.factorization_ms = std::chrono::duration<double, std::milli>(t1 - t0).count() + refactorization_ms;
   result.solve_ms =
     std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - t_start)).count() - refactorization_ms;

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/interruption.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
@@ -237,7 +238,9 @@ std::ptrdiff_t factor_supernode(const Supernodal_factor_view<Index, Scalar>& L, 
 // own values are not read), `lower` being the lower triangle of P A P^T,
 // with the kernels Top_kernels for the top of the tree and Subtree_kernels in
 // the subtrees. Returns -1, or a column where P A P^T showed not to be
-// positive definite (the factor is then unusable).
+// positive definite (the factor is then unusable). Throws
+// Computation_interrupted when the check installed on the calling thread
+// asks to stop (interruption.h).
 template <typename Top_kernels, typename Subtree_kernels, typename Index, typename Scalar>
 std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Scalar>& L, Scalar* values,
                                          const Eigen::SparseMatrix<Scalar>& lower, const Supernodal_updates<Index>& updates,
@@ -265,6 +268,7 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
   std::unique_lock<std::mutex> exclusive(blas_factorization_lock(), std::defer_lock);
   if(std::is_same<Top_kernels, Dense_kernels<typename Scalar::value_type> >::value) exclusive.lock();
   std::ptrdiff_t failed = -1;
+  Interruption_poll poll;
   isolated([&] {
     std::atomic<std::ptrdiff_t> failed_column(-1);
     {
@@ -274,7 +278,7 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
       parallel_for_each_task(tasks.size(), [&](std::size_t i) {
         const Supernodal_solve_plan::Task& task = tasks[order[i]];
         Supernode_workspace<Index, Scalar> workspace(L.n);
-        for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0; ++s)
+        for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0 && !poll.stopped(); ++s)
         {
           const std::ptrdiff_t column = factor_supernode<Subtree_kernels>(L, values, lower, updates, s, workspace);
           if(column >= 0) failed_column.store(column);
@@ -283,9 +287,10 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
     }
     failed = failed_column.load();
     Supernode_workspace<Index, Scalar> workspace(L.n);
-    for(auto s = plan.top().begin(); s != plan.top().end() && failed < 0; ++s)
+    for(auto s = plan.top().begin(); s != plan.top().end() && failed < 0 && !poll.stopped(); ++s)
       failed = factor_supernode<Top_kernels>(L, values, lower, updates, *s, workspace);
   });
+  poll.throw_if_stopped();
   return failed;
 }
 

@@ -37,7 +37,8 @@
 // Conventions, fixed here once:
 //  * vertex `v` has index `get(vim, v)` in [0, |V|), face `f` has index in [0, |F|);
 //  * `faces[f] = {a, b, c}` lists the face's vertices in the order of its
-//    halfedge cycle, which is counter-clockwise for the mesh's orientation;
+//    halfedge cycle, which is counter-clockwise for the mesh's orientation,
+//    starting at the vertex of smallest index;
 //  * a corner is the pair (face f, position c in 0..2), numbered `3 f + c`;
 //    its vertex is `faces[f][c]`, and the halfedge leaving that vertex along the
 //    face, `faces[f][c] -> faces[f][(c+1)%3]`, is the corner's first side
@@ -46,7 +47,10 @@
 //  * the fan of vertex v lists its corners counter-clockwise; the first side of
 //    the first corner is v's reference direction X_v. For a boundary vertex the
 //    fan starts at the boundary edge that has the interior on its left, so the
-//    corners sweep the interior.
+//    corners sweep the interior; a closed fan starts at the edge to the
+//    neighbour of smallest index. Neither depends on halfedge(f) or
+//    halfedge(v): the same vertex and face numbering gives the same field
+//    whatever data structure holds the mesh.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -212,8 +216,25 @@ void copy_points(const TriangleMesh& tm, const PointOf& point_of, VertexIndexMap
   numbering.check_complete();
 }
 
-// The vertices of every face in the order of its halfedge cycle; throws on a
-// face that is not a triangle. Returns the number of faces of each vertex.
+// The halfedge of face f whose source has the smallest vertex index: the
+// face's first corner. Numbering corners from it (rather than from
+// halfedge(f)) makes the corners, hence every reference direction and the
+// field's digits, depend on the vertex numbering only, not on how the mesh's
+// halfedges were built (user manual, "Reference Directions").
+template <typename TriangleMesh, typename VertexIndexMap>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+first_corner_halfedge(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& tm,
+                      VertexIndexMap vim)
+{
+  auto h = halfedge(f, tm), best = h;
+  for(int c = 0; c < 3; ++c, h = next(h, tm))
+    if(get(vim, source(h, tm)) < get(vim, source(best, tm))) best = h;
+  return best;
+}
+
+// The vertices of every face in the order of its halfedge cycle, from its
+// first corner; throws on a face that is not a triangle. Returns the number
+// of faces of each vertex.
 template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
 std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Indexed_mesh& m)
 {
@@ -228,6 +249,7 @@ std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap v
     auto h = halfedge(f, tm);
     if(next(next(next(h, tm), tm), tm) != h)
       throw Invalid_input_error("face " + std::to_string(fi) + " is not a triangle");
+    h = first_corner_halfedge(f, tm, vim);
     for(int c = 0; c < 3; ++c, h = next(h, tm))
     {
       m.faces[fi][c] = static_cast<std::size_t>(get(vim, source(h, tm)));
@@ -241,23 +263,25 @@ std::vector<std::size_t> copy_triangles(const TriangleMesh& tm, VertexIndexMap v
 // The corners of one vertex, counter-clockwise, found by walking its
 // halfedges; for an open fan the walk starts on the border (see the
 // conventions above).
-template <typename TriangleMesh, typename FaceIndexMap>
+template <typename TriangleMesh, typename VertexIndexMap, typename FaceIndexMap>
 class Fan_walker
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   const TriangleMesh& m_tm;
+  VertexIndexMap m_vim;
   FaceIndexMap m_fim;
   std::vector<std::size_t> m_clockwise;  // the corners of an open fan before the start, clockwise
 
 public:
-  Fan_walker(const TriangleMesh& tm, FaceIndexMap fim) : m_tm(tm), m_fim(fim) {}
+  Fan_walker(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim) : m_tm(tm), m_vim(vim), m_fim(fim) {}
 
-  // The corner 3 f + c of halfedge h, c its position in its face's cycle.
+  // The corner 3 f + c of halfedge h, c its position in its face's cycle
+  // counted from the face's first corner.
   std::size_t corner_of(halfedge_descriptor h) const
   {
     const auto f = face(h, m_tm);
-    halfedge_descriptor g = halfedge(f, m_tm);
+    halfedge_descriptor g = first_corner_halfedge(f, m_tm, m_vim);
     int c = 0;
     while(g != h) { g = next(g, m_tm); ++c; }
     return 3 * static_cast<std::size_t>(get(m_fim, f)) + static_cast<std::size_t>(c);
@@ -296,6 +320,20 @@ public:
   }
 };
 
+// A closed fan has no border to start from: it starts at the corner whose
+// first side leads to the neighbour of smallest index (the smallest corner
+// among equals, on a multiple edge), so that the vertex's reference direction
+// depends on the numbering only, not on halfedge(v).
+inline void start_closed_fan_at_smallest_neighbour(const Indexed_mesh& m, std::vector<std::size_t>& fan)
+{
+  auto key = [&m](std::size_t corner) {
+    return std::make_pair(m.vertex_of_corner(Indexed_mesh::next_corner(corner)), corner);
+  };
+  auto first = std::min_element(fan.begin(), fan.end(),
+                                [&key](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::rotate(fan.begin(), first, fan.end());
+}
+
 // Twins from a fan: corner k at v has third vertex b, and the next corner k2
 // counter-clockwise has first side v -> b, the reverse of the first side
 // b -> v of previous_corner(k). Each vertex writes the twins of its own
@@ -333,7 +371,7 @@ void build_fans(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim,
 
   std::vector<unsigned char> non_manifold(nv, 0);
   parallel_for_each_range(nv, [&](std::size_t begin, std::size_t end) {
-    Fan_walker<TriangleMesh, FaceIndexMap> walker(tm, fim);
+    Fan_walker<TriangleMesh, VertexIndexMap, FaceIndexMap> walker(tm, vim, fim);
     std::vector<std::size_t> fan;
     for(std::size_t i = begin; i < end; ++i)
     {
@@ -347,6 +385,7 @@ void build_fans(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim,
         continue;
       }
       m.is_border_vertex[i] = open;
+      if(!open) start_closed_fan_at_smallest_neighbour(m, fan);
       std::copy(fan.begin(), fan.end(), m.fan_corners.begin() + static_cast<std::ptrdiff_t>(m.fan_offsets[i]));
       set_twins_of_fan(fan, open, m);
     }

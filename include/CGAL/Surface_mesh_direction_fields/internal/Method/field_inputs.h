@@ -96,8 +96,39 @@ inline void rescale_extreme_guidance(std::vector<std::complex<double> >& q)
   for(auto& c : q) c = std::complex<double>(std::ldexp(c.real(), -exponent), std::ldexp(c.imag(), -exponent));
 }
 
+// Curvature guidance that a user's vectors join is scaled, per component, to
+// an area-weighted root mean square length of 1/10, so that a user vector of
+// length 1 weighs ten times the component's typical curvature guidance
+// whatever the mesh's size and sampling: strokes are followed at their
+// default length (user manual, "Aligned and Constrained Fields").
+inline void scale_to_tenth_rms(const Indexed_mesh& m, const Tangent_spaces& ts, const Components& comps,
+                              std::vector<std::complex<double> >& q)
+{
+  std::vector<double> area(m.number_of_vertices(), 0.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c) area[m.faces[f][c]] += ts.face_area[f] / 3.;
+  for(const Component& comp : comps.list)
+  {
+    double largest = 0.;
+    for(std::size_t v : comp.vertices) largest = (std::max)(largest, std::abs(q[v]));
+    if(!(largest > 0.) || !std::isfinite(largest)) continue;
+    double weighted = 0., total = 0.;  // of |q / largest|^2: no overflow
+    for(std::size_t v : comp.vertices)
+    {
+      weighted += area[v] * std::norm(q[v] / largest);
+      total += area[v];
+    }
+    if(!(weighted > 0.) || !(total > 0.)) continue;
+    const double rms = largest * std::sqrt(weighted / total);
+    for(std::size_t v : comp.vertices) q[v] /= 10. * rms;
+  }
+}
+
 // The guidance field q (n-th power coefficients per vertex), from the
 // principal curvatures and/or a user vector field; empty if there is none.
+// With both, a vertex's user vector replaces the curvature guidance there,
+// in units of a tenth of the component's typical curvature guidance
+// (scale_to_tenth_rms()).
 template <typename SparseSolver>
 std::vector<std::complex<double> >
 guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const Components& components,
@@ -124,14 +155,17 @@ guidance_coefficients(const Indexed_mesh& mesh, const Tangent_spaces& ts, const 
   }
   if(request.has_guidance_map)
   {
-    if(q.empty()) q.assign(mesh.number_of_vertices(), Complex(0., 0.));
+    if(q.empty())
+      q.assign(mesh.number_of_vertices(), Complex(0., 0.));
+    else
+      scale_to_tenth_rms(mesh, ts, components, q);
     for(std::size_t i = 0; i < request.guidance.size(); ++i)
     {
       const Vec3& g = request.guidance[i];  // finite (named_inputs.h)
       // divided by its largest coordinate first, so that no square overflows or underflows
       const double largest = (std::max)({std::abs(g[0]), std::abs(g[1]), std::abs(g[2])});
       if(largest > 0.)
-        q[i] += largest * tangent_coefficient(mesh, ts, i, (1. / largest) * g, degree, normals[i]);
+        q[i] = largest * tangent_coefficient(mesh, ts, i, (1. / largest) * g, degree, normals[i]);
     }
   }
   rescale_extreme_guidance(q);
