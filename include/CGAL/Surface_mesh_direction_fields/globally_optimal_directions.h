@@ -251,7 +251,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
     \cgalParamDescription{called on the calling thread with the fraction done (0 to 1) at each step, before
-                          each solve of the iteration and every 20 ms during the default solver's
+                          each solve of the iteration and repeatedly during the default solver's
                           factorizations; returning `false` stops the computation with
                           `Computation_interrupted`, the output maps unchanged (a way to honour Ctrl-C)}
     \cgalParamType{a callable `bool(double)`}
