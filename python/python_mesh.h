@@ -3,6 +3,7 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_MESH_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_MESH_H
 
+#include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>

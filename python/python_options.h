@@ -11,6 +11,7 @@
 #include "file_io/messages.h"
 #include "file_io/optional_named_parameters.h"
 
+#include <complex>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -69,6 +70,7 @@ struct Maps
   Mesh::Property_map<Vertex_index, Kernel::Vector_3> direction, guidance, constraint;
   Mesh::Property_map<Vertex_index, bool> constrained;
   Mesh::Property_map<Vertex_index, double> magnitude;
+  Mesh::Property_map<Vertex_index, std::complex<double> > coefficient;
   Mesh::Property_map<Edge_index, bool> feature;
   Mesh::Property_map<Vertex_index, Kernel::Vector_3> normal;  // of the keyword normals
 
@@ -77,6 +79,7 @@ struct Maps
   {
     direction = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:smdf_direction").first;
     magnitude = mesh.add_property_map<Vertex_index, double>("v:smdf_magnitude", 0.).first;
+    coefficient = mesh.add_property_map<Vertex_index, std::complex<double> >("v:smdf_coefficient").first;
   }
 };
 
@@ -354,6 +357,18 @@ public:
     }
   }
 
+  // Ctrl-C after the last fraction: checked before the result's arrays are
+  // made (without the GIL; the user's callable is not called again)
+  void stop_if_signalled()
+  {
+    {
+      py::gil_scoped_acquire gil;
+      if(PyErr_CheckSignals() == 0) return;
+      m_error = std::make_unique<py::error_already_set>();
+    }
+    throw SMDF::Computation_interrupted("interrupted before the result was made");
+  }
+
   // with the GIL held: the Python exception that stopped the computation
   void raise_if_stopped()
   {
@@ -383,6 +398,7 @@ SMDF::Direction_field_result compute_field(const Call& call, const Options& o, c
                     .intrinsic_mollification(o.intrinsic_mollification)
                     .progress_callback([&progress](double fraction) { return progress(fraction); })
                     .vertex_magnitude_map(maps.magnitude)
+                    .vertex_coefficient_map(maps.coefficient)
                     .singularities_output_iterator(singularities);
   typedef Mesh::Property_map<Vertex_index, Kernel::Vector_3> Vector_map;
   typedef Mesh::Property_map<Vertex_index, bool> Bool_map;

@@ -11,9 +11,12 @@
 
 namespace {
 
+typedef Eigen::SparseMatrix<std::complex<double> > Complex_matrix;
+
 struct Result
 {
   py::array_t<double> directions, magnitudes, normals, tangent_frames;
+  py::array_t<std::complex<double> > coefficients;
   py::array_t<long long> singular_faces, loop_turns;
   std::vector<double> eigenvalues;
   SMDF::Direction_field_result report;
@@ -25,6 +28,7 @@ struct Result
 struct Field_values
 {
   std::vector<double> directions, magnitudes, normals, frames;  // 3, 1, 3 and 6 per vertex
+  std::vector<std::complex<double> > coefficients;
   std::vector<std::pair<Face_index, int> > singular;
   SMDF::Direction_field_result report;
 };
@@ -104,6 +108,7 @@ Field_values copy_field(const Mesh& mesh, const Maps& maps, bool user_normals)
     const Kernel::Vector_3 x = get(maps.direction, v);
     values.directions.insert(values.directions.end(), {x.x(), x.y(), x.z()});
     values.magnitudes.push_back(get(maps.magnitude, v));
+    values.coefficients.push_back(get(maps.coefficient, v));
   }
   copy_normals_and_frames(mesh, maps, user_normals, values);
   return values;
@@ -118,6 +123,8 @@ Result make_result(Field_values values)
   r.magnitudes = py::array_t<double>(nv);
   std::copy(values.directions.begin(), values.directions.end(), r.directions.mutable_data());
   std::copy(values.magnitudes.begin(), values.magnitudes.end(), r.magnitudes.mutable_data());
+  r.coefficients = py::array_t<std::complex<double> >(nv);
+  std::copy(values.coefficients.begin(), values.coefficients.end(), r.coefficients.mutable_data());
   r.normals = py::array_t<double>({nv, py::ssize_t(3)});
   r.tangent_frames = py::array_t<double>({nv, py::ssize_t(2), py::ssize_t(3)});
   std::copy(values.normals.begin(), values.normals.end(), r.normals.mutable_data());
@@ -212,6 +219,7 @@ public:
                                std::back_inserter(singular), progress);
         if(as_free_function) m_field.reset();
       }
+      progress.stop_if_signalled();
       values = copy_field(m_mesh, m_maps, !o.normals.empty());  // still under the lock: the maps are this call's
     }
     catch(const SMDF::Invalid_input_error& e)
@@ -240,6 +248,27 @@ public:
     return p;
   }
   static void operator delete(void* p) { ::operator delete(p); }
+
+  // A and M of (n, s) on this mesh (Globally_optimal_direction_field::energy_and_mass_matrices()).
+  std::pair<Complex_matrix, Complex_matrix> matrices(int degree, double s, double mollification)
+  {
+    try
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(m_busy);
+      if(!m_field || mollification != m_mollification)
+      {
+        Options o;  // the normals do not enter A and M
+        o.intrinsic_mollification = mollification;
+        make_field(o);
+      }
+      return m_field->energy_and_mass_matrices(degree, s);
+    }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      throw SMDF::Invalid_input_error(in_python_names(e.what()));
+    }
+  }
 
   bool constructed() const { return m_signature == constructed_signature; }
   std::size_t vertices() const { return m_mesh.number_of_vertices(); }
@@ -305,10 +334,25 @@ py::array_t<double> all_directions(const Result& r)
   return all;
 }
 
+// A compressed-column matrix as the arrays scipy.sparse.csc_matrix takes:
+// (data, indices, indptr), and its number of rows.
+py::tuple compressed_columns(Complex_matrix matrix)
+{
+  matrix.makeCompressed();
+  const Complex_matrix::StorageIndex columns = static_cast<Complex_matrix::StorageIndex>(matrix.cols());
+  const Complex_matrix::StorageIndex entries = matrix.outerIndexPtr()[columns];
+  py::array_t<std::complex<double> > data(entries);
+  py::array_t<Complex_matrix::StorageIndex> indices(entries), indptr(columns + 1);
+  std::copy(matrix.valuePtr(), matrix.valuePtr() + entries, data.mutable_data());
+  std::copy(matrix.innerIndexPtr(), matrix.innerIndexPtr() + entries, indices.mutable_data());
+  std::copy(matrix.outerIndexPtr(), matrix.outerIndexPtr() + columns + 1, indptr.mutable_data());
+  return py::make_tuple(data, indices, indptr, matrix.rows());
+}
+
 py::tuple result_state(const Result& r)
 {
-  return py::make_tuple(r.directions, r.magnitudes, r.normals, r.tangent_frames, r.singular_faces, r.loop_turns,
-                        r.eigenvalues, report_state(r.report));
+  return py::make_tuple(r.directions, r.magnitudes, r.coefficients, r.normals, r.tangent_frames, r.singular_faces,
+                        r.loop_turns, r.eigenvalues, report_state(r.report));
 }
 
 Result result_from(const py::tuple& state)
@@ -317,6 +361,7 @@ Result result_from(const py::tuple& state)
   Result r;
   r.directions = read.next<py::array_t<double> >();
   r.magnitudes = read.next<py::array_t<double> >();
+  r.coefficients = read.next<py::array_t<std::complex<double> > >();
   r.normals = read.next<py::array_t<double> >();
   r.tangent_frames = read.next<py::array_t<double> >();
   r.singular_faces = read.next<py::array_t<long long> >();
@@ -356,6 +401,9 @@ void bind_result(py::module_& m)
       return chi;
     })
     .def_property_readonly("timings", [](const Result& r) { return timings_of(r.report); }, "milliseconds")
+    .def_readonly("coefficients", &Result::coefficients,
+                  "(|V|,) complex128: per vertex u, |u| the magnitude, arg(u) n times the first direction's angle "
+                  "from e1 with the vertex's angle sum scaled to 2 pi (the vectors DirectionField.matrices() acts on)")
     .def_readonly("normals", &Result::normals, "the unit normal per vertex about which the directions turn, (|V|, 3)")
     .def_readonly("tangent_frames", &Result::tangent_frames,
                   "(|V|, 2, 3): per vertex e1 along its reference edge (to its neighbour of smallest index; on the "
@@ -482,6 +530,13 @@ void bind_field(py::module_& m)
          "V: (|V|, 3) float64 vertex positions; F: (|F|, 3) integer triangles (an oriented manifold mesh)")
     .def("compute", [](Direction_field_object* f, const py::kwargs& kw) { return initialized(f).compute(kw); },
          compute_doc)
+    .def("_matrices",
+         [](Direction_field_object* f, int degree, double s, double mollification) {
+           std::pair<Complex_matrix, Complex_matrix> am = initialized(f).matrices(degree, s, mollification);
+           return py::make_tuple(compressed_columns(std::move(am.first)), compressed_columns(std::move(am.second)));
+         },
+         py::kw_only(), py::arg("degree"), py::arg("s"), py::arg("intrinsic_mollification"),
+         "the arrays of A and M (DirectionField.matrices() makes them scipy.sparse matrices)")
     .def_property_readonly("construction_ms", [](Direction_field_object* f) { return initialized(f).construction_ms(); },
                            "milliseconds of the C++ class's mesh work (indexing, geometry, components; 0 before the first compute())")
     .def("__repr__", [](Direction_field_object* f) {

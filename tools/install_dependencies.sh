@@ -7,7 +7,7 @@ packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-
 if [ "${1:-main}" = tests ]; then
   packages+=(doxygen python3 python3-meshio python3-vtk9 python3-numpy python3-pytest libopenmesh-dev libcgal-qt5-dev
              pkg-config openmpi-bin libpetsc-complex-dev libslepc-complex-dev qt6-base-dev libqt6opengl6-dev
-             python3-venv python3-pip python3-setuptools mypy)
+             python3-venv python3-pip python3-setuptools python3-scipy mypy)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -9,7 +9,7 @@ type stubs, ``__init__.pyi`` with ``py.typed``, describe them for mypy and
 editors).
 """
 import inspect
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Tuple
 
 from . import _core
 from ._core import *  # noqa: F401,F403
@@ -41,6 +41,19 @@ class DirectionField(_core.DirectionField):
 
     def compute(self, /, **options: Any) -> "Result":
         return super().compute(**options)
+
+    def matrices(self, *, degree: int = 4, s: float = 0.0, intrinsic_mollification: float = 1e-6) -> Tuple[Any, Any]:
+        """The energy matrix A (the connection Laplacian at s = 0) and the mass matrix M of the fields of
+        degree n and smoothness parameter s on this mesh, as scipy.sparse CSR matrices of complex128 (scipy is
+        imported here, and only here). Both are Hermitian, indexed by vertex, empty at isolated vertices, in
+        the mesh's units (M scales with area). They act on Result.coefficients: the smoothest field's satisfy
+        A u = lambda M u on each component, lambda its entry of Result.eigenvalues."""
+        import scipy.sparse
+        arrays = self._matrices(degree=degree, s=s, intrinsic_mollification=intrinsic_mollification)
+        made = []
+        for data, indices, indptr, n in arrays:
+            made.append(scipy.sparse.csc_matrix((data, indices, indptr), shape=(n, n)).tocsr())
+        return made[0], made[1]
 
 
 def _face_keywords(*, degree: int = 4, align: Optional[str] = None, guidance: Any = None,

@@ -16,6 +16,7 @@ class ComputationInterrupted(RuntimeError): ...
 class Result:
     directions: npt.NDArray[np.float64]      # (|V|, 3) unit tangent directions
     magnitudes: npt.NDArray[np.float64]      # (|V|,)
+    coefficients: npt.NDArray[np.complex128]  # (|V|,) u per vertex: |u| the magnitude (see DirectionField.matrices)
     singular_faces: npt.NDArray[np.int64]    # (k, 2): face, k (index k / n)
     loop_turns: npt.NDArray[np.int64]        # (m, 2): loop, turns (give back as prescribed_loop_turns)
     eigenvalues: List[float]                 # per component
@@ -64,6 +65,8 @@ class DirectionField:
         intrinsic_mollification: float = 1e-6, normals: Optional[npt.ArrayLike] = None,
         max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
         progress: Optional[Callable[[float], None]] = None) -> Result: ...
+    def matrices(self, *, degree: int = 4, s: float = 0.0,
+                 intrinsic_mollification: float = 1e-6) -> Tuple[Any, Any]: ...  # scipy.sparse (A, M)
     @property
     def construction_ms(self) -> float: ...
 

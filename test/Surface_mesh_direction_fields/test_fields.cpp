@@ -32,6 +32,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <iostream>
 #include <iterator>
 #include <map>
@@ -465,6 +466,50 @@ static void check_halfedge_independence(Test_report& report, const Mesh& base, c
   report.check(same_face_field, name + ": halfedge(f), halfedge(v) moved: the same face field and matching");
 }
 
+// The matrices of energy_and_mass_matrices() act on the coefficients of
+// vertex_coefficient_map (user manual, "Conventions"): the smoothest field's
+// solve A u = lambda M u with the reported eigenvalue; A and M are Hermitian,
+// |u| is the magnitude, and scaling the mesh by 10 scales M by 100, A not.
+static void check_energy_and_mass_matrices(Test_report& report, const Mesh& base)
+{
+  typedef Eigen::SparseMatrix<std::complex<double> > Matrix;
+  Mesh mesh = base;
+  auto dir = direction_map(mesh);
+  auto magnitude = mesh.add_property_map<Vertex_index, double>("v:magnitude", 0.).first;
+  auto coefficient = mesh.add_property_map<Vertex_index, std::complex<double> >("v:coefficient").first;
+  SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
+  const SMDF::Direction_field_result r =
+    field.compute(dir, params::degree(5).smoothness_parameter(0.3).vertex_magnitude_map(magnitude)
+                         .vertex_coefficient_map(coefficient));
+  const std::pair<Matrix, Matrix> am = field.energy_and_mass_matrices(5, 0.3);
+  Eigen::VectorXcd u(static_cast<Eigen::Index>(mesh.number_of_vertices()));
+  bool lengths = true;
+  for(Vertex_index v : mesh.vertices())
+  {
+    u[static_cast<Eigen::Index>(v.idx())] = coefficient[v];
+    lengths = lengths && std::abs(std::abs(coefficient[v]) - magnitude[v]) <= 1e-14 * magnitude[v];
+  }
+  const double lambda = r.components[0].eigenvalue;
+  const Eigen::VectorXcd mu = lambda * (am.second * u);
+  const double residual = (am.first * u - mu).norm() / mu.norm();
+  const Matrix a_adjoint = am.first.adjoint(), m_adjoint = am.second.adjoint();
+  const bool hermitian = (am.first - a_adjoint).norm() == 0. && (am.second - m_adjoint).norm() == 0.;
+  report.check(lengths && hermitian && residual < 1e-7,
+               "energy_and_mass_matrices(): Hermitian, |u| the magnitude, A u = lambda M u (relative residual " +
+                 std::to_string(residual) + ")");
+  Mesh larger = base;
+  for(Vertex_index v : larger.vertices()) larger.point(v) = CGAL::ORIGIN + 10. * (larger.point(v) - CGAL::ORIGIN);
+  const std::pair<Matrix, Matrix> scaled =
+    SMDF::Globally_optimal_direction_field<Mesh>(larger).energy_and_mass_matrices(5, 0.3);
+  const double energy_change = (scaled.first - am.first).norm() / am.first.norm();
+  const double mass_change = (scaled.second - 100. * am.second).norm() / (100. * am.second.norm());
+  report.check(energy_change < 1e-12 && mass_change < 1e-12, "energy_and_mass_matrices(): M scales with area, A not");
+  bool refused = false;
+  try { field.energy_and_mass_matrices(0, 0.); }
+  catch(const SMDF::Invalid_input_error&) { refused = true; }
+  report.check(refused, "energy_and_mass_matrices(): degree 0 refused");
+}
+
 int main()
 {
   Test_report report("fields");
@@ -518,6 +563,7 @@ int main()
     }
     check_invariance(report, lumpy, "lumpy sphere");
     check_halfedge_independence(report, lumpy, "lumpy sphere");
+    check_energy_and_mass_matrices(report, lumpy);
     Mesh disk;
     make_disk(disk, 12);
     for(Vertex_index v : disk.vertices())  // a curved cap

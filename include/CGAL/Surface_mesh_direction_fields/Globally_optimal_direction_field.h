@@ -43,6 +43,8 @@
 #  include <Eigen/SparseCholesky>
 #endif
 
+#include <Eigen/SparseCore>
+
 #include <chrono>
 #include <complex>
 #include <functional>
@@ -257,6 +259,11 @@ public:
       const auto vmm = get_parameter(np, internal_np::vertex_magnitude_map);
       for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i) put(vmm, m_vertex_of_index[i], answer.magnitudes[i]);
     }
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_coefficient_map_t>::value)
+    {
+      const auto vcm = get_parameter(np, internal_np::vertex_coefficient_map);
+      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i) put(vcm, m_vertex_of_index[i], answer.coefficients[i]);
+    }
     result.timings.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     return result;
@@ -287,6 +294,27 @@ public:
       }
     }
     return loops;
+  }
+
+  /*!
+  returns the energy matrix \f$ A \f$ and the mass matrix \f$ M \f$ of the fields of degree `n` and
+  smoothness parameter `s` on this mesh (user manual, sections "Energies" and "The Smoothest Field"):
+  both Hermitian, rows and columns numbered by the vertex index map of the construction, with no entry
+  at isolated vertices, in the mesh's units (\f$ M \f$ scales with area, \f$ A \f$ not). The
+  coefficients of a field (named parameter `vertex_coefficient_map`) are in the same reference frames:
+  the smoothest field's satisfy \f$ A u = \lambda M u \f$ with \f$ \lambda \f$ the reported eigenvalue
+  of each component. The matrices are those the computation uses, for users who build on them.
+
+  \param degree the degree `n`, from 1 to `maximum_degree`
+  \param s the smoothness parameter, in \f$ [-1, 1] \f$
+  \returns the pair (\f$ A \f$, \f$ M \f$), square matrices with one row per vertex
+  \throws Invalid_input_error for a degree or an `s` out of range
+  */
+  std::pair<Eigen::SparseMatrix<std::complex<double> >, Eigen::SparseMatrix<std::complex<double> > >
+  energy_and_mass_matrices(int degree = default_degree, double s = 0.)
+  {
+    internal::check_field_parameters(degree, s);
+    return m_engine->energy_and_mass(degree, s);
   }
 
   /// \cond SKIP_IN_MANUAL

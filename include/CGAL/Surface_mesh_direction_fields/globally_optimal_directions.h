@@ -190,6 +190,17 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
                    as key type and `double` (or `GT::FT`) as value type}
     \cgalParamDefault{no output}
   \cgalParamNEnd
+  \cgalParamNBegin{vertex_coefficient_map}
+    \cgalParamDescription{a property map receiving at each vertex the field's complex coefficient
+                          \f$ u_i \f$ in the vertex's reference frame (user manual, section "Conventions"):
+                          its length is the magnitude of `vertex_magnitude_map`, its argument \f$ n \f$ times
+                          the rescaled angle of the first direction; these are the vectors on which the matrices
+                          of `Globally_optimal_direction_field::energy_and_mass_matrices()` act; `0` at isolated
+                          vertices}
+    \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `std::complex<double>` as value type}
+    \cgalParamDefault{no output}
+  \cgalParamNEnd
   \cgalParamNBegin{intrinsic_mollification}
      \cgalParamDescription{the relative margin \f$ \delta \f$ of the intrinsic mollification (Sharp and Crane, 2020):
                            where a face violates \f$ \ell_a + \ell_b - \ell_c \ge \delta \bar\ell \f$, the smallest

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
@@ -56,6 +57,10 @@ public:
   Direction_field_result compute(const Field_request& request, const SparseSolver* solver, Field_answer& answer);
 
   std::vector<Corner_loop> prescription_loops();
+  // The energy A and the mass M of degree n and parameter s on the whole
+  // mesh (rows and columns by vertex index, no entry at isolated vertices),
+  // in the user's units: A u = lambda M u for the smoothest field's u.
+  std::pair<Complex_sparse_matrix, Complex_sparse_matrix> energy_and_mass(int degree, double s);
   void keep_factorizations(bool keep);
   std::size_t number_of_vertices() const;
   std::size_t number_of_faces() const;

@@ -107,6 +107,7 @@ public:
     report_indices(face_indices(m_geometry.mesh, m_systems.connection(), u), result, answer);
     result.loop_turns = m_prescribed.loop_turns_of(u, m_systems.connection(), result.components);
     write_directions(u, result.degree, targets.constraints, result, answer);
+    store_coefficients(std::move(u), answer);
     for(Component_report& report : result.components)
     {
       report.eigenvalue = m_geometry.eigenvalue_to_user(report.eigenvalue);
@@ -117,6 +118,38 @@ public:
   }
 
   std::vector<Corner_loop> prescription_loops() { return m_prescribed.loops(); }
+
+  // A and M of every component, gathered into matrices over all vertices.
+  std::pair<Complex_sparse_matrix, Complex_sparse_matrix> energy_and_mass(int degree, double s)
+  {
+    const Mesh_geometry& g = m_geometry;
+    const Connection& connection = m_systems.update_connection(degree);
+    const std::vector<Energy_and_mass> parts =
+      assemble_energy_and_mass(g.mesh, g.tangent_spaces, connection, g.components, s);
+    // lengths were multiplied by length_scale: A is unchanged, areas are divided back
+    const double area_to_user = 1. / (g.length_scale * g.length_scale);
+    const Eigen::Index nv = static_cast<Eigen::Index>(g.mesh.number_of_vertices());
+    std::pair<Complex_sparse_matrix, Complex_sparse_matrix> whole(Complex_sparse_matrix(nv, nv),
+                                                                   Complex_sparse_matrix(nv, nv));
+    std::vector<Eigen::Triplet<Complex> > energy, mass;
+    for(std::size_t c = 0; c < parts.size(); ++c)
+    {
+      const std::vector<Compact_index>& vertex = g.components.list[c].vertices;
+      auto gather = [&](const Complex_sparse_matrix& part, double factor,
+                        std::vector<Eigen::Triplet<Complex> >& out) {
+        for(Eigen::Index j = 0; j < part.outerSize(); ++j)
+          for(Complex_sparse_matrix::InnerIterator it(part, j); it; ++it)
+            out.emplace_back(static_cast<Eigen::Index>(vertex[static_cast<std::size_t>(it.row())]),
+                             static_cast<Eigen::Index>(vertex[static_cast<std::size_t>(it.col())]),
+                             factor * it.value());
+      };
+      gather(parts[c].energy, 1., energy);
+      gather(parts[c].mass, area_to_user, mass);
+    }
+    whole.first.setFromTriplets(energy.begin(), energy.end());
+    whole.second.setFromTriplets(mass.begin(), mass.end());
+    return whole;
+  }
   void keep_factorizations(bool keep) { m_systems.keep_factorizations(keep); }
   const Indexed_mesh& mesh() const { return m_geometry.mesh; }
 
@@ -145,6 +178,19 @@ private:
     options.random_seed = request.random_seed;
     options.shift_fraction = shift_fraction_for(request.s);
     return options;
+  }
+
+  // u as the user sees it: the phase of the solution, the length of `magnitudes`
+  // (per component, the solution times one factor: still an eigenvector of A, M).
+  static void store_coefficients(std::vector<Complex>&& u, Field_answer& answer)
+  {
+    answer.coefficients = std::move(u);
+    for(std::size_t v = 0; v < answer.coefficients.size(); ++v)
+    {
+      Complex& c = answer.coefficients[v];
+      const double length = std::abs(c);
+      c = length > 0. ? c * (answer.magnitudes[v] / length) : Complex(0., 0.);
+    }
   }
 
   // The field of component c into u and `magnitudes`; its report into result.components[c].
@@ -204,6 +250,7 @@ private:
     write_directions(u, result.degree, targets.constraints, result, answer);
     answer.magnitudes.resize(u.size());
     for(std::size_t v = 0; v < u.size(); ++v) answer.magnitudes[v] = std::abs(u[v]);  // 1, 0 at isolated vertices
+    store_coefficients(std::move(u), answer);
     progress.reached(1.);
     finish_timings(start, result.timings);
     return result;
@@ -319,6 +366,13 @@ template <typename SparseSolver>
 std::vector<Corner_loop> Field_engine<SparseSolver>::prescription_loops()
 {
   return m_impl->prescription_loops();
+}
+
+template <typename SparseSolver>
+std::pair<Complex_sparse_matrix, Complex_sparse_matrix> Field_engine<SparseSolver>::energy_and_mass(int degree,
+                                                                                                    double s)
+{
+  return m_impl->energy_and_mass(degree, s);
 }
 
 template <typename SparseSolver>

@@ -97,27 +97,6 @@ inline std::vector<Complex> face_constraints(const Indexed_mesh& m, const Tangen
   return c;
 }
 
-// Curvature guidance on faces that a user's vectors join: scaled per
-// component to an area-weighted root mean square length of 1/10 (as
-// scale_to_tenth_rms() does on vertices).
-inline void scale_faces_to_tenth_rms(const Tangent_spaces& ts, const Components& comps, std::vector<Complex>& q)
-{
-  for(const Component& comp : comps.list)
-  {
-    double largest = 0., weighted = 0., total = 0.;
-    for(std::size_t f : comp.faces) largest = (std::max)(largest, std::abs(q[f]));
-    if(!(largest > 0.) || !std::isfinite(largest)) continue;
-    for(std::size_t f : comp.faces)
-    {
-      weighted += ts.face_area[f] * std::norm(q[f] / largest);
-      total += ts.face_area[f];
-    }
-    if(!(weighted > 0.) || !(total > 0.)) continue;
-    const double rms = largest * std::sqrt(weighted / total);
-    for(std::size_t f : comp.faces) q[f] /= 10. * rms;
-  }
-}
-
 // The guidance on faces: the curvature line field raised to n / 2 (keeping
 // its magnitude, the difference of the principal curvatures), and the
 // user's vectors (projected, their length their weight), which replace the
@@ -136,7 +115,8 @@ inline std::vector<Complex> face_guidance(const Indexed_mesh& m, const Tangent_s
       q[f] = std::polar(std::abs(line[f]), 0.5 * static_cast<double>(n) * (std::arg(line[f]) + turn));
   }
   if(request.guidance.empty()) return q;
-  if(request.curvature != Principal_curvature_alignment::NONE) scale_faces_to_tenth_rms(ts, comps, q);
+  if(request.curvature != Principal_curvature_alignment::NONE)  // per component, as on vertices
+    for(const Component& comp : comps.list) scale_to_tenth_rms(comp.faces, ts.face_area, q);
   for(std::size_t f = 0; f < q.size(); ++f)
   {
     const Vec3 normal = face_frame(m, f)[1];
@@ -181,6 +161,7 @@ public:
     options.residual_tolerance = request.residual_tolerance;
     options.random_seed = request.random_seed;
     options.keep_going = progress.keep_going_test();
+    options.transport_in_energy = true;
     std::vector<Complex> u(m_mesh.number_of_faces(), Complex(0., 0.));
     result.components.resize(m_components.list.size());
     result.timings.setup_ms = milliseconds_since(start);

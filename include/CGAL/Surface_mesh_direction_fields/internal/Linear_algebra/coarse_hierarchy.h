@@ -55,12 +55,15 @@ inline Complex unit(const Complex& z)
   return r > 0. ? z / r : Complex(1., 0.);
 }
 
-// The transport comes from the phases of the mass matrix M (the coupling
-// M_ir = r |t| / 12 is positive up to the transport for every
-// non-degenerate face, whereas the cotangent weights of A can change sign):
-// x_i = unit(M_ir) x_r makes the cross term conj(x_i) M_ir x_r positive real.
-inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
+// The transport comes from the phases of the coupling C = sign M: on
+// vertices the mass matrix M (the coupling M_ir = r |t| / 12 is positive up
+// to the transport for every non-degenerate face, whereas the cotangent
+// weights of A can change sign), on faces, whose M is diagonal, C = -A (the
+// dual edges' weights are positive). x_i = unit(C_ir) x_r makes the cross
+// term conj(x_i) C_ir x_r positive real.
+inline Aggregates aggregate_vertices(const Complex_sparse_matrix& coupling, double sign = 1.)
 {
+  const Complex_sparse_matrix& M = coupling;
   const Eigen::Index n = M.rows();
   Aggregates g;
   g.of_vertex.assign(static_cast<std::size_t>(n), -1);
@@ -79,7 +82,7 @@ inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
       if(it.row() != r)
       {
         g.of_vertex[static_cast<std::size_t>(it.row())] = c;
-        g.phase[it.row()] = unit(it.value());  // M_ir
+        g.phase[it.row()] = unit(sign * it.value());  // C_ir
       }
   }
   // leftovers: join the aggregate of the most strongly coupled neighbour
@@ -97,7 +100,7 @@ inline Aggregates aggregate_vertices(const Complex_sparse_matrix& M)
       if(j == i || first_pass[static_cast<std::size_t>(j)] < 0 || std::norm(it.value()) <= strongest) continue;
       strongest = std::norm(it.value());
       best = j;
-      best_value = it.value();
+      best_value = sign * it.value();
     }
     if(best >= 0)
     {

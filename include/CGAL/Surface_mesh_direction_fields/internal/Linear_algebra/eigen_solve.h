@@ -99,6 +99,9 @@ struct Eigen_solve_options
   double coarse_tolerance = 1e-4;
   int smoothing_sweeps = 4;
   double shift_fraction = shift_fraction_for(0.);
+  // M diagonal, stored with A's pattern (fields on faces): the coarse levels'
+  // transport is read from -A (see aggregate_vertices())
+  bool transport_in_energy = false;
   // whether A - sigma M may be factored in single precision (see
   // factor_below_smallest_eigenvalue()), and the solves after which a
   // single-precision factor is replaced if the best residual has not fallen
@@ -258,7 +261,8 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
   if constexpr(std::is_default_constructible<SparseSolver>::value)
   {
     if(!same_pattern) return estimate;
-    const Aggregates aggregates = aggregate_vertices(M);
+    const Aggregates aggregates =
+      options.transport_in_energy ? aggregate_vertices(A, -1.) : aggregate_vertices(M);
     if(2 * aggregates.count > A.rows()) return estimate;
     Complex_sparse_matrix coarse_A, coarse_M;
     restrict_to_aggregates(A, M, aggregates, coarse_A, coarse_M);

@@ -116,15 +116,18 @@ struct Face_energy_and_mass
 // A and M of one component for degree n: E(u) = sum over dual edges of
 // w |u_g - r_fg u_f|^2 with r_fg = exp(i n rho_fg), M = diag(|f|). Each
 // interior side is visited from both faces; the visit from f adds w to A_ff
-// and -w r_fg to A_gf, so both triangles of the Hermitian A are written.
+// and -w r_fg to A_gf, so both triangles of the Hermitian A are written. M
+// stores explicit zeros where A has entries: with one pattern the eigen-solve
+// estimates its shift and start vector on coarse levels (coarse_hierarchy.h)
+// and forms A - sigma M entry by entry.
 inline Face_energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
                                                  const Dual_connection& dc, const Component& comp, int n,
                                                  const std::vector<std::size_t>& local)
 {
   const Eigen::Index nf = static_cast<Eigen::Index>(comp.faces.size());
   std::vector<Eigen::Triplet<Complex> > energy, mass;
-  energy.reserve(4 * comp.faces.size());
-  mass.reserve(comp.faces.size());
+  energy.reserve(7 * comp.faces.size());
+  mass.reserve(4 * comp.faces.size());
   for(std::size_t i = 0; i < comp.faces.size(); ++i)
   {
     const std::size_t f = comp.faces[i];
@@ -139,6 +142,7 @@ inline Face_energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Ta
       const Eigen::Index j = static_cast<Eigen::Index>(local[twin / 3]);
       energy.emplace_back(row, row, Complex(w, 0.));
       energy.emplace_back(j, row, -w * std::polar(1., static_cast<double>(n) * dc.transport[corner]));
+      mass.emplace_back(j, row, Complex(0., 0.));
     }
   }
   Face_energy_and_mass em;

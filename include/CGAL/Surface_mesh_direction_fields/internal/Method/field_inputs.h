@@ -100,28 +100,34 @@ inline void rescale_extreme_guidance(std::vector<std::complex<double> >& q)
 // an area-weighted root mean square length of 1/10, so that a user vector of
 // length 1 weighs ten times the component's typical curvature guidance
 // whatever the mesh's size and sampling: strokes are followed at their
-// default length (user manual, "Aligned and Constrained Fields").
+// default length (user manual, "Aligned and Constrained Fields"). This scales
+// q on the vertices or faces `elements` of one component, `area` the area
+// each stands for.
+inline void scale_to_tenth_rms(const std::vector<Compact_index>& elements, const std::vector<double>& area,
+                               std::vector<std::complex<double> >& q)
+{
+  double largest = 0.;
+  for(std::size_t e : elements) largest = (std::max)(largest, std::abs(q[e]));
+  if(!(largest > 0.) || !std::isfinite(largest)) return;
+  double weighted = 0., total = 0.;  // of |q / largest|^2: no overflow
+  for(std::size_t e : elements)
+  {
+    weighted += area[e] * std::norm(q[e] / largest);
+    total += area[e];
+  }
+  if(!(weighted > 0.) || !(total > 0.)) return;
+  const double rms = largest * std::sqrt(weighted / total);
+  for(std::size_t e : elements) q[e] /= 10. * rms;
+}
+
+// The same for guidance per vertex (a third of each incident face's area).
 inline void scale_to_tenth_rms(const Indexed_mesh& m, const Tangent_spaces& ts, const Components& comps,
-                              std::vector<std::complex<double> >& q)
+                               std::vector<std::complex<double> >& q)
 {
   std::vector<double> area(m.number_of_vertices(), 0.);
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
     for(int c = 0; c < 3; ++c) area[m.faces[f][c]] += ts.face_area[f] / 3.;
-  for(const Component& comp : comps.list)
-  {
-    double largest = 0.;
-    for(std::size_t v : comp.vertices) largest = (std::max)(largest, std::abs(q[v]));
-    if(!(largest > 0.) || !std::isfinite(largest)) continue;
-    double weighted = 0., total = 0.;  // of |q / largest|^2: no overflow
-    for(std::size_t v : comp.vertices)
-    {
-      weighted += area[v] * std::norm(q[v] / largest);
-      total += area[v];
-    }
-    if(!(weighted > 0.) || !(total > 0.)) continue;
-    const double rms = largest * std::sqrt(weighted / total);
-    for(std::size_t v : comp.vertices) q[v] /= 10. * rms;
-  }
+  for(const Component& comp : comps.list) scale_to_tenth_rms(comp.vertices, area, q);
 }
 
 // The guidance field q (n-th power coefficients per vertex), from the

@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <array>
+#include <complex>
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -82,6 +83,7 @@ struct Field_answer
 {
   std::vector<Vec3> directions;   // unit tangent direction per vertex
   std::vector<double> magnitudes;  // |u| per vertex, times the square root of its component's area
+  std::vector<std::complex<double> > coefficients;  // u per vertex, of length `magnitudes`
   std::vector<std::pair<std::size_t, int> > singular_faces;  // (face, k), in face order
 };
 

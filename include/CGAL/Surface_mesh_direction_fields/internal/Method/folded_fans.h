@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <queue>
 #include <utility>
 #include <vector>
 
@@ -262,6 +263,27 @@ inline double missing_turns(const Indexed_mesh& m, const Tangent_spaces& ts, std
   return std::round((expected - turn) / (2. * CGAL_PI));
 }
 
+// Adds |missing| turns of 2 pi (with the sign of `missing`) to the defects of
+// the faces in [first, last), one at a time, each to the face whose defect it
+// changes least (the smallest |defect + turn|, the smallest face on a tie). A
+// heap keeps the choice O(log faces): a cluster can hold thousands of faces
+// and miss thousands of turns (closed surfaces of high genus with sharp edges).
+template <typename Iterator>
+void give_turns(double missing, Iterator first, Iterator last, std::vector<double>& defect)
+{
+  const double turn = missing > 0. ? 2. * CGAL_PI : -2. * CGAL_PI;
+  typedef std::pair<double, std::size_t> Keyed_face;
+  std::priority_queue<Keyed_face, std::vector<Keyed_face>, std::greater<Keyed_face> > nearest;
+  for(Iterator it = first; it != last; ++it) nearest.emplace(std::abs(defect[it->second] + turn), it->second);
+  for(double left = std::abs(missing); left > 0.; left -= 1.)
+  {
+    const std::size_t f = nearest.top().second;
+    nearest.pop();
+    defect[f] += turn;
+    nearest.emplace(std::abs(defect[f] + turn), f);
+  }
+}
+
 // Gauss-Bonnet with projected fans. A projected interior fan turns by 2 pi w
 // (w = 0 at a vertex pushed over the opposite side of its folded face), the
 // intrinsic one by exactly 2 pi. The defect of a face with a projected vertex
@@ -295,15 +317,7 @@ inline void balance_projected_turns(const Indexed_mesh& m, Tangent_spaces& ts)
   {
     const auto first = std::lower_bound(faces_of.begin(), faces_of.end(), std::make_pair(c, std::size_t(0)));
     const auto last = std::lower_bound(faces_of.begin(), faces_of.end(), std::make_pair(c + 1, std::size_t(0)));
-    for(; missing != 0. && first != last; missing -= missing > 0. ? 1. : -1.)
-    {
-      const double turn = missing > 0. ? two_pi : -two_pi;
-      std::size_t best = first->second;
-      for(auto it = first; it != last; ++it)
-        if(std::abs(ts.face_angle_defect[it->second] + turn) < std::abs(ts.face_angle_defect[best] + turn))
-          best = it->second;
-      ts.face_angle_defect[best] += turn;
-    }
+    if(missing != 0. && first != last) give_turns(missing, first, last, ts.face_angle_defect);
   }
 }
 
