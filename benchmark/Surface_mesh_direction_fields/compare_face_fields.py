@@ -4,8 +4,12 @@ computeSmoothestFaceDirectionField (with computeVertexIndex) and against the
 package's own field on vertices, interleaved in one run: each round runs the
 three once per mesh; the medians and their ratios are printed.
 
-    compare_face_fields.py --gc-driver GC_FACE_DRIVER --program DIRECTION_FIELD [--reps 3] [--degree 4] MESHES
+    compare_face_fields.py --gc-driver GC_FACE_DRIVER --program DIRECTION_FIELD [--before OLD_DIRECTION_FIELD]
+                           [--reps 3] [--degree 4] MESHES
     compare_face_fields.py --prescription --program DIRECTION_FIELD [--reps 3] [--degree 4] MESHES
+
+With --before: another build's field on faces too, in the same rounds (a change
+measured before and after in one run).
 
 With --prescription: the smoothest field on faces against prescribing its own
 singular vertices (--prescribe), each a fresh run of the program.
@@ -75,6 +79,7 @@ def main():
     parser.add_argument("--prescription", action="store_true",
                         help="instead: the smoothest field on faces against prescribing its own singular vertices")
     parser.add_argument("--program", required=True)
+    parser.add_argument("--before", help="another build of the program: its field on faces in the same rounds")
     parser.add_argument("--reps", type=int, default=3)
     parser.add_argument("--degree", type=int, default=4)
     parser.add_argument("meshes", nargs="+")
@@ -83,25 +88,31 @@ def main():
         return compare_prescription(a)
     if not a.gc_driver:
         parser.error("--gc-driver is required (or --prescription)")
-    times = {m: {"gc": [], "faces": [], "vertices": []} for m in a.meshes}
+    times = {m: {"gc": [], "faces": [], "vertices": [], "before": []} for m in a.meshes}
     singular = {}
     for _ in range(a.reps):
         for m in a.meshes:
             t, s_gc = gc_time(a.gc_driver, m, a.degree)
             times[m]["gc"].append(t)
+            if a.before:
+                times[m]["before"].append(package_time(a.before, m, a.degree, "faces")[0])
             t, s_faces = package_time(a.program, m, a.degree, "faces")
             times[m]["faces"].append(t)
             t, s_vertices = package_time(a.program, m, a.degree, "vertices")
             times[m]["vertices"].append(t)
             singular[m] = (s_gc, s_faces, s_vertices)
-    print("| mesh | gc faces ms | package faces ms | package vertices ms | faces / gc | faces / vertices |"
-          " singular (gc, faces: vertices; vertices: faces) |")
-    print("|---|---|---|---|---|---|---|")
+    before_head = " faces before ms | before / gc | before / vertices |" if a.before else ""
+    print("| mesh | gc faces ms |" + before_head + " package faces ms | package vertices ms | faces / gc |"
+          " faces / vertices | singular (gc, faces: vertices; vertices: faces) |")
+    print("|---|---|" + ("---|---|---|" if a.before else "") + "---|---|---|---|---|")
     for m in a.meshes:
         gc, faces, vertices = (statistics.median(times[m][k]) for k in ("gc", "faces", "vertices"))
-        print("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %d, %d; %d |" %
-              (os.path.basename(m), gc, faces, vertices, faces / gc, faces / vertices, *singular[m]))
-
+        before = ""
+        if a.before:
+            b = statistics.median(times[m]["before"])
+            before = " %.1f | %.2f | %.2f |" % (b, b / gc, b / vertices)
+        print("| %s | %.1f |%s %.1f | %.1f | %.2f | %.2f | %d, %d; %d |" %
+              (os.path.basename(m), gc, before, faces, vertices, faces / gc, faces / vertices, *singular[m]))
 
 if __name__ == "__main__":
     main()
