@@ -217,10 +217,13 @@ private:
     turn_towards_guidance(request, theta);
     progress.reached(1.);
     const auto rotation = [&](std::size_t side) { return change_across(trees, delta, side); };
-    for(std::size_t side = 0; side < 3 * m_mesh.number_of_faces(); ++side)
-      if(m_mesh.twin_corner[side] != no_index && is_representative_side(m_mesh, side) &&
-         std::abs(rotation(side) - face_rotation(theta, m_dual, request.degree, side, m_mesh.twin_corner[side])) > 1e-6)
-        ++result.number_of_non_principal_jumps;
+    std::vector<unsigned char> non_principal(3 * m_mesh.number_of_faces(), 0);  // flagged in parallel, then counted
+    parallel_for_each_index(non_principal.size(), [&](std::size_t side) {
+      non_principal[side] =
+        m_mesh.twin_corner[side] != no_index && is_representative_side(m_mesh, side) &&
+        std::abs(rotation(side) - face_rotation(theta, m_dual, request.degree, side, m_mesh.twin_corner[side])) > 1e-6;
+    });
+    for(unsigned char flag : non_principal) result.number_of_non_principal_jumps += flag;
     write_turning(theta, turning_of_field(m_mesh, m_spaces, m_dual, m_components, theta, request.degree, rotation),
                   request.degree, result, answer);
     result.timings.total_ms = milliseconds_since(start);
@@ -426,8 +429,9 @@ private:
                      Face_direction_field_result& result, Face_field_answer& answer) const
   {
     answer.directions.resize(theta.size());
-    for(std::size_t f = 0; f < theta.size(); ++f)
+    parallel_for_each_index(theta.size(), [&](std::size_t f) {
       answer.directions[f] = direction_in_face(m_mesh, f, theta[f] / static_cast<double>(n));
+    });
     for(std::size_t v = 0; v < m_mesh.number_of_vertices(); ++v)
     {
       if(turning.vertex_index[v] == 0) continue;

@@ -247,26 +247,26 @@ Face_field_turning turning_of_field(const Indexed_mesh& m, const Tangent_spaces&
   Face_field_turning turning;
   turning.vertex_index.assign(m.number_of_vertices(), 0);
   turning.boundary_index.assign(comps.list.size(), 0);
+  // the fans' turns in parallel; the boundary's sums after, in vertex order (the same digits on any thread count)
+  std::vector<double> turn(m.number_of_vertices(), 0.);
+  parallel_for_each_index(turn.size(), [&](std::size_t v) {
+    if(m.fan_size(v) == 0) return;
+    turn[v] = fan_turn(m, ts, n, v, rotation) / (2. * CGAL_PI);
+    if(!m.is_border_vertex[v]) turning.vertex_index[v] = static_cast<int>(std::lround(turn[v]));
+  });
   std::vector<double> boundary_turn(comps.list.size(), 0.);
   for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
-  {
-    if(m.fan_size(v) == 0) continue;
-    const double turn = fan_turn(m, ts, n, v, rotation) / (2. * CGAL_PI);
-    if(m.is_border_vertex[v])
-      boundary_turn[comps.component_of_face[m.fan_corners[m.fan_offsets[v]] / 3]] += turn;
-    else
-      turning.vertex_index[v] = static_cast<int>(std::lround(turn));
-  }
+    if(m.fan_size(v) != 0 && m.is_border_vertex[v])
+      boundary_turn[comps.component_of_face[m.fan_corners[m.fan_offsets[v]] / 3]] += turn[v];
   for(std::size_t c = 0; c < comps.list.size(); ++c) turning.boundary_index[c] = std::llround(boundary_turn[c]);
   turning.matching.assign(3 * m.number_of_faces(), 0);
-  for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
-  {
+  parallel_for_each_index(3 * m.number_of_faces(), [&](std::size_t corner) {
     const std::size_t twin = m.twin_corner[corner];
-    if(twin == no_index) continue;
+    if(twin == no_index) return;
     const double jump = theta[twin / 3] - theta[corner / 3] - static_cast<double>(n) * dc.transport[corner] -
                         rotation(corner);
     turning.matching[corner] = static_cast<int>(std::lround(jump / (2. * CGAL_PI)));
-  }
+  });
   return turning;
 }
 

@@ -197,6 +197,12 @@ class Face_connection_change
   Eigen::Index m_unknowns = 0;
   Factored_real_matrix m_laplacian;
   int m_degree = 1;
+  // What does not depend on the indices, for m_degree: the changes on the
+  // handle loops, and each node's target without its 2 pi k (an edit then
+  // walks no fan twice).
+  int m_cached_degree = 0;
+  Eigen::VectorXd m_handle_change;
+  std::vector<double> m_node_base;
 
   double n_rho(std::size_t side) const { return static_cast<double>(m_degree) * m_dual.transport[side]; }
 
@@ -225,32 +231,56 @@ class Face_connection_change
     m_laplacian.factor(L);
   }
 
-  // What each node's equation asks of sum delta around it.
-  double node_target(std::size_t node, const std::vector<int>& k) const
+  // What each node's equation asks of sum delta around it, without the
+  // 2 pi k of a vertex.
+  double node_base(std::size_t node) const
   {
-    double around = 0.;
-    for_each_side_around_node(m_mesh, m_trees, node, [&](std::size_t side) { around += n_rho(side); });
-    if(node >= m_mesh.number_of_vertices()) return -reduce_angle(around);
+    if(node >= m_mesh.number_of_vertices())
+    {
+      double around = 0.;
+      for_each_side_around_node(m_mesh, m_trees, node, [&](std::size_t side) { around += n_rho(side); });
+      return -reduce_angle(around);
+    }
     double defect = 2. * CGAL_PI;
     for(std::size_t corner : m_mesh.fan(node)) defect -= m_spaces.corner_angle[corner];
-    return 2. * CGAL_PI * k[node] - static_cast<double>(m_degree) * defect;
+    return -(static_cast<double>(m_degree) * defect);
   }
 
-  // The handle loops (their other edges lie in the faces' tree, with no
-  // change), then each node's equation from the leaves to the roots, solved
-  // for the edge to its parent.
-  Eigen::VectorXd particular_change(const std::vector<int>& k) const
+  double node_target(std::size_t node, const std::vector<int>& k) const
   {
+    const double base = m_node_base[node];
+    return node < m_mesh.number_of_vertices() ? 2. * CGAL_PI * k[node] + base : base;
+  }
+
+  // The handle loops' changes (their other edges lie in the faces' tree,
+  // with no change) and the nodes' bases, for m_degree.
+  void cache_degree_terms()
+  {
+    if(m_cached_degree == m_degree) return;
     const Dual_trees& t = m_trees;
-    Eigen::VectorXd delta = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(t.edges.number_of_edges()));
+    m_handle_change = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(t.edges.number_of_edges()));
     std::vector<double> turn(m_mesh.number_of_faces(), 0.);  // n rho summed along the faces' tree
     for(std::size_t f : t.face_order)
       if(t.entry_corner[f] != no_index) turn[f] = turn[t.entry_corner[f] / 3] + n_rho(t.entry_corner[f]);
     for(std::size_t e : t.handle_edges)
     {
       const std::size_t side = t.edges.corner_of_edge[e], g = m_mesh.twin_corner[side] / 3;
-      delta[static_cast<Eigen::Index>(e)] = -reduce_angle(turn[side / 3] + n_rho(side) - turn[g]);
+      m_handle_change[static_cast<Eigen::Index>(e)] = -reduce_angle(turn[side / 3] + n_rho(side) - turn[g]);
     }
+    m_node_base.assign(t.node_parent_edge.size(), 0.);
+    parallel_for_each_index(t.node_order.size(), [&](std::size_t i) {
+      const std::size_t node = t.node_order[i];
+      if(t.node_parent_edge[node] != no_index) m_node_base[node] = node_base(node);
+    });
+    m_cached_degree = m_degree;
+  }
+
+  // The handle loops' changes, then each node's equation from the leaves to
+  // the roots, solved for the edge to its parent.
+  Eigen::VectorXd particular_change(const std::vector<int>& k) const
+  {
+    const Dual_trees& t = m_trees;
+    Eigen::VectorXd delta = m_handle_change;
     for(auto it = t.node_order.rbegin(); it != t.node_order.rend(); ++it)
     {
       const std::size_t node = *it, to_parent = t.node_parent_edge[node];
@@ -272,21 +302,24 @@ class Face_connection_change
   {
     const Dual_trees& t = m_trees;
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m_unknowns);
-    for(std::size_t side = 0; side < 3 * m_mesh.number_of_faces(); ++side)
-    {
-      if(m_mesh.twin_corner[side] == no_index || m_unknown[side / 3] == no_index) continue;
-      const double w = m_dual.weight[t.edges.corner_of_edge[t.edges.edge_of_corner[side]]];
-      rhs[static_cast<Eigen::Index>(m_unknown[side / 3])] += w * change_across(t, delta, side);
-    }
+    // per face (its own entry, its sides in order: the same sums on any thread count)
+    parallel_for_each_index(m_mesh.number_of_faces(), [&](std::size_t f) {
+      if(m_unknown[f] == no_index) return;
+      for(std::size_t side = 3 * f; side < 3 * f + 3; ++side)
+      {
+        if(m_mesh.twin_corner[side] == no_index) continue;
+        const double w = m_dual.weight[t.edges.corner_of_edge[t.edges.edge_of_corner[side]]];
+        rhs[static_cast<Eigen::Index>(m_unknown[f])] += w * change_across(t, delta, side);
+      }
+    });
     const Eigen::VectorXd phi = m_laplacian.solve(rhs);
     auto phi_of = [&](std::size_t f) {
       return m_unknown[f] == no_index ? 0. : phi[static_cast<Eigen::Index>(m_unknown[f])];
     };
-    for(std::size_t e = 0; e < t.edges.number_of_edges(); ++e)
-    {
+    parallel_for_each_index(t.edges.number_of_edges(), [&](std::size_t e) {
       const std::size_t side = t.edges.corner_of_edge[e], twin = m_mesh.twin_corner[side];
       if(twin != no_index) delta[static_cast<Eigen::Index>(e)] += phi_of(twin / 3) - phi_of(side / 3);
-    }
+    });
   }
 
   // Where some |delta_e| is pi or more, a phi on the faces with
@@ -348,6 +381,7 @@ public:
   Eigen::VectorXd solve(const std::vector<int>& k, int n)
   {
     m_degree = n;
+    cache_degree_terms();
     Eigen::VectorXd delta = particular_change(k);
     remove_dual_gradient(delta);
     if(delta.size() > 0 && delta.cwiseAbs().maxCoeff() >= CGAL_PI - 1e-9) fit_below_half_turn(delta);
