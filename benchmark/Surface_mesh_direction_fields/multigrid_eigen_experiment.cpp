@@ -1,12 +1,20 @@
 // A measurement toward issue 50 (a factor-free eigen-solve): the smallest
-// eigenpair of the smoothest field's pencil (A, M) by LOBPCG (one vector),
+// eigenpair of the smoothest field's pencil (A, M) by block LOBPCG,
 // preconditioned by V-cycles on the package's aggregation hierarchy
-// (coarse_hierarchy.h: aggregates transported by the phases of M), against
-// the package's direct path on the same mesh, in one run. Prints the levels,
-// the iterations, the times, the eigenvalues and the angle between the two
-// eigenvectors.
+// (coarse_hierarchy.h: aggregates transported by the phases of M) or, as the
+// ideal to compare with, by an exact solve with B = A - shift M; against the
+// package's direct path on the same mesh, in one run. Prints the levels, the
+// V-cycle's own convergence factor, the iterations, the times, the
+// eigenvalues and the angle between the two eigenvectors.
 //   usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W]
-//                                     [--prolongation plain|smoothed]
+//            [--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact]
+//            [--shift-fraction F] [--transport connection|none] [--strength THETA]
+// --shift-fraction F shifts B to A - F lambda_1 M (lambda_1 from the direct
+// path: the ideal shift, for measurement only). --transport none replaces
+// the pencil by the scalar cotangent Laplacian and mass (the transport
+// removed), a control that tells the connection's part in the V-cycle's rate
+// from the mesh's. --strength THETA aggregates along strong couplings only
+// (strong_couplings()).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -19,6 +27,7 @@
 #include <complex>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,54 +38,89 @@ typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef std::complex<double> Complex;
 typedef Eigen::SparseMatrix<Complex> Matrix;
 typedef Eigen::VectorXcd Vector;
+typedef Eigen::MatrixXcd Block;
 typedef std::chrono::steady_clock Clock;
 
-static double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+static double ms_since(Clock::time_point t)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
-// The hierarchy of B = A + epsilon M: B and its diagonal per level, the
-// prolongations between levels (the aggregates' piecewise-constant one, with
-// their phases, or that smoothed by one damped Jacobi step of B: smoothed
-// aggregation), the Galerkin products P^* B P and P^* M P, and a factorization
-// of the coarsest B.
+struct Options
+{
+  int degree = 4, sweeps = 2, block = 1;
+  double over_correction = 1., shift_fraction = 0., strength = 0.;
+  bool smoothed = false, exact = false, scalar = false;
+};
+
+// The couplings the aggregation may follow: those of positive weight
+// w_ij = Re(-B_ij conj(phase of M_ij)) above theta sqrt(B_ii B_jj) (the strength
+// of connection of algebraic multigrid), with M's values for their phases.
+// Without it every neighbour joins an aggregate, also across the negative
+// cotangent weights of obtuse triangles and along the weak direction of
+// stretched ones.
+static Matrix strong_couplings(const Matrix& B, const Matrix& M, double theta)
+{
+  std::vector<Eigen::Triplet<Complex> > kept;
+  for(Eigen::Index c = 0; c < B.outerSize(); ++c)
+    for(Matrix::InnerIterator it(B, c); it; ++it)
+    {
+      const Complex m = M.coeff(it.row(), c);
+      const double w = (-it.value() * std::conj(SI::unit(m))).real();
+      if(it.row() == c || w > theta * std::sqrt(B.coeff(c, c).real() * B.coeff(it.row(), it.row()).real()))
+        kept.emplace_back(it.row(), c, m);
+    }
+  Matrix strong(B.rows(), B.cols());
+  strong.setFromTriplets(kept.begin(), kept.end());
+  return strong;
+}
+
+// The hierarchy of B: B and its diagonal per level, the prolongations between
+// levels (the aggregates' piecewise-constant one, with their phases, or that
+// smoothed by one damped Jacobi step of B: smoothed aggregation), the
+// Galerkin products P^* B P and P^* M P, and a factorization of the coarsest
+// B (and of the finest, for the exact preconditioner).
 struct Hierarchy
 {
   std::vector<Matrix> B, M, P;
   std::vector<Eigen::VectorXd> diagonal;
-  Eigen::SimplicialLDLT<Matrix> coarsest;
-  int sweeps = 2;
-  double over_correction = 1.;
+  Eigen::SimplicialLDLT<Matrix> coarsest, finest;
+  const Options& options;
 
-  Hierarchy(const Matrix& A0, const Matrix& M0, double epsilon, Eigen::Index coarse_size, bool smoothed)
+  Hierarchy(const Matrix& B0, const Matrix& M0, Eigen::Index coarse_size, const Options& o) : options(o)
   {
-    B.push_back(A0 + epsilon * M0);
+    B.push_back(B0);
     M.push_back(M0);
-    diagonal.push_back(B.back().diagonal().real());
+    diagonal.push_back(B0.diagonal().real());
     while(B.back().rows() > coarse_size)
     {
-      const SI::Aggregates g = SI::aggregate_vertices(M.back());
+      const SI::Aggregates g =
+        SI::aggregate_vertices(o.strength > 0. ? strong_couplings(B.back(), M.back(), o.strength) : M.back());
+      if(g.count > B.back().rows() * 4 / 5) break;  // coarsening stalls (few strong couplings): factor this level
       std::vector<Eigen::Triplet<Complex> > entries;
-      for(Eigen::Index i = 0; i < B.back().rows(); ++i) entries.emplace_back(i, g.of_vertex[std::size_t(i)], g.phase[i]);
+      for(Eigen::Index i = 0; i < B.back().rows(); ++i)
+        entries.emplace_back(i, g.of_vertex[std::size_t(i)], g.phase[i]);
       Matrix p(B.back().rows(), g.count);
       p.setFromTriplets(entries.begin(), entries.end());
-      if(smoothed)
+      if(o.smoothed)
       {
-        Eigen::VectorXcd inverse = (2. / 3.) * diagonal.back().cwiseInverse().cast<Complex>();
+        const Vector inverse = (2. / 3.) * diagonal.back().cwiseInverse().cast<Complex>();
         p = Matrix(p - inverse.asDiagonal() * (B.back() * p));
         p.prune(Complex(0., 0.));
       }
       const Matrix pa = p.adjoint();
-      const Matrix bc = pa * B.back() * p, mc = pa * M.back() * p;
       P.push_back(p);
-      B.push_back(bc);
-      M.push_back(mc);
-      diagonal.push_back(bc.diagonal().real());
+      B.push_back(pa * B.back() * p);
+      M.push_back(pa * M.back() * p);
+      diagonal.push_back(B.back().diagonal().real());
     }
     coarsest.compute(B.back());
+    if(o.exact) finest.compute(B[0]);
   }
 
   void smooth(std::size_t l, const Vector& b, Vector& x) const
   {
-    for(int s = 0; s < sweeps; ++s)
+    for(int s = 0; s < options.sweeps; ++s)
     {
       const Vector r = b - B[l] * x;
       x.array() += (2. / 3.) * r.array() / diagonal[l].array().cast<Complex>();
@@ -89,9 +133,27 @@ struct Hierarchy
     Vector x = Vector::Zero(b.size());
     smooth(l, b, x);
     const Vector rc = P[l].adjoint() * (b - B[l] * x);
-    x += over_correction * (P[l] * cycle(l + 1, rc));
+    x += options.over_correction * (P[l] * cycle(l + 1, rc));
     smooth(l, b, x);
     return x;
+  }
+
+  Vector precondition(const Vector& r) const { return options.exact ? Vector(finest.solve(r)) : cycle(0, r); }
+
+  // The V-cycle as a stationary iteration on B x = 0 from a random x: the
+  // factor by which the energy norm falls in the last of `cycles` cycles.
+  double vcycle_factor(int cycles) const
+  {
+    Vector x = Vector::Random(B[0].rows());
+    double previous = std::sqrt(x.dot(B[0] * x).real()), factor = 0.;
+    for(int k = 0; k < cycles; ++k)
+    {
+      x -= cycle(0, B[0] * x);
+      const double e = std::sqrt(x.dot(B[0] * x).real());
+      factor = e / previous;
+      previous = e;
+    }
+    return factor;
   }
 };
 
@@ -102,66 +164,156 @@ struct Eigenpair
   int iterations = 0;
 };
 
-// LOBPCG for one vector: Rayleigh-Ritz on span{x, T r, p}, orthonormalized for M.
-static Eigenpair lobpcg(const Matrix& A, const Matrix& M, const Hierarchy& h, Vector x, double scale, double tol,
-                        int max_iterations)
+// Removes span(X) (X M-orthonormal) from Z; twice, as one pass leaves
+// rounding of the size of Z's component along X.
+static void project_out(const Matrix& M, const Block& X, Block& Z)
 {
+  for(int pass = 0; pass < 2; ++pass) Z -= X * (X.adjoint() * (M * Z));
+}
+
+// M-orthonormalizes Z by the eigen-decomposition of its Gram matrix after
+// scaling each column to unit M-norm (SVQB), dropping dependent directions.
+// The scaling is what lets a correction that is already tiny (a converged
+// residual's) survive: unscaled, a threshold relative to the largest
+// column drops it, and the iteration stalls.
+static Block m_orthonormal(const Matrix& M, const Block& Z)
+{
+  const Block G = Z.adjoint() * (M * Z);
+  Eigen::VectorXd d = G.diagonal().real();
+  for(Eigen::Index i = 0; i < d.size(); ++i) d[i] = d[i] > 0. ? 1. / std::sqrt(d[i]) : 0.;
+  const Block scaled = d.asDiagonal() * G * d.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Block> gram(0.5 * (scaled + scaled.adjoint()));
+  const double largest = gram.eigenvalues().maxCoeff();
+  std::vector<Eigen::Index> kept;
+  for(Eigen::Index k = 0; k < scaled.rows(); ++k)
+    if(gram.eigenvalues()[k] > 1e-13 * largest) kept.push_back(k);
+  Block C(scaled.rows(), Eigen::Index(kept.size()));
+  for(std::size_t k = 0; k < kept.size(); ++k)
+    C.col(Eigen::Index(k)) = d.asDiagonal() * gram.eigenvectors().col(kept[k]) / std::sqrt(gram.eigenvalues()[kept[k]]);
+  return Z * C;
+}
+
+// The Ritz vectors of span S (S M-orthonormal) for the `count` smallest Ritz values.
+static Block ritz_vectors(const Matrix& A, const Block& S, Eigen::Index count, Block& coefficients,
+                          Eigen::VectorXd& values)
+{
+  const Block H = S.adjoint() * (A * S);
+  Eigen::SelfAdjointEigenSolver<Block> ritz(0.5 * (H + H.adjoint()));
+  coefficients = ritz.eigenvectors().leftCols(count);
+  values = ritz.eigenvalues().head(count);
+  return S * coefficients;
+}
+
+// Block LOBPCG: Rayleigh-Ritz on [X, W, P] (X the current Ritz vectors, W
+// their preconditioned residuals, P the last update outside span X);
+// converged when the first vector's relative residual is below tol.
+static Eigenpair lobpcg(const Matrix& A, const Matrix& M, const Hierarchy& h, const Vector& start, int block,
+                        double scale, double tol, int max_iterations)
+{
+  const Eigen::Index n = A.rows();
+  Block X(n, block), P(n, 0), C;
+  X.col(0) = start;
+  for(Eigen::Index j = 1; j < block; ++j) X.col(j) = Vector::Random(n);
+  Eigen::VectorXd theta;
+  X = ritz_vectors(A, m_orthonormal(M, X), block, C, theta);
   Eigenpair e;
-  Vector p;
-  for(e.iterations = 0; e.iterations < max_iterations; ++e.iterations)
+  for(e.iterations = 0;; ++e.iterations)
   {
-    x /= std::sqrt(x.dot(M * x).real());
-    const Vector Ax = A * x, Mx = M * x;
-    e.lambda = x.dot(Ax).real();
-    const Vector r = Ax - e.lambda * Mx;
-    e.residual = r.norm() / (scale * Mx.norm());
-    if(e.residual < tol) break;
-    if(std::getenv("TRACE") && e.iterations % 10 == 0) std::cout << "    " << e.iterations << " " << e.residual << "\n";
-    Eigen::MatrixXcd S(x.size(), p.size() > 0 ? 3 : 2);
-    S.col(0) = x;
-    S.col(1) = h.cycle(0, r);
-    if(p.size() > 0) S.col(2) = p;
-    // M-orthonormal basis (Cholesky of the Gram matrix, columns dropped if dependent)
-    const Eigen::MatrixXcd MS = M * S;
-    Eigen::MatrixXcd G = S.adjoint() * MS;
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> gram(G);
-    const double largest = gram.eigenvalues().maxCoeff();
-    std::vector<Eigen::Index> kept;
-    for(Eigen::Index k = 0; k < G.rows(); ++k)
-      if(gram.eigenvalues()[k] > 1e-14 * largest) kept.push_back(k);
-    Eigen::MatrixXcd W(G.rows(), Eigen::Index(kept.size()));
-    for(std::size_t k = 0; k < kept.size(); ++k)
-      W.col(Eigen::Index(k)) = gram.eigenvectors().col(kept[k]) / std::sqrt(gram.eigenvalues()[kept[k]]);
-    const Eigen::MatrixXcd Q = S * W;
-    const Eigen::MatrixXcd H = Q.adjoint() * (A * Q);
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> ritz(0.5 * (H + H.adjoint()));
-    const Eigen::VectorXcd c = ritz.eigenvectors().col(0);
-    const Vector next = Q * c;
-    // the search direction: next without its component along x
-    p = next - x * (x.dot(M * next));
-    x = next;
+    const Block MX = M * X;
+    const Block R = A * X - MX * theta.asDiagonal();
+    e.lambda = theta[0];
+    e.residual = R.col(0).norm() / (scale * MX.col(0).norm());
+    if(e.residual < tol || e.iterations == max_iterations) break;
+    Block Z(n, R.cols() + P.cols());
+    for(Eigen::Index j = 0; j < R.cols(); ++j) Z.col(j) = h.precondition(R.col(j));
+    Z.rightCols(P.cols()) = P;
+    for(int pass = 0; pass < 2; ++pass)
+    {
+      project_out(M, X, Z);
+      Z = m_orthonormal(M, Z);
+    }
+    Block S(n, X.cols() + Z.cols());
+    S << X, Z;
+    X = ritz_vectors(A, S, block, C, theta);
+    P = Z * C.bottomRows(Z.cols());
   }
-  e.x = x;
+  e.x = X.col(0);
   return e;
+}
+
+// The scalar control: the cotangent weights and the mass without the
+// transport (each coupling rotated by the conjugate of M's phase), the
+// diagonal made to sum each row of A to zero.
+static void remove_transport(Matrix& A, Matrix& M)
+{
+  std::vector<Eigen::Triplet<Complex> > a, m;
+  Eigen::VectorXd row_sum = Eigen::VectorXd::Zero(A.rows());
+  for(Eigen::Index c = 0; c < A.outerSize(); ++c)
+    for(Matrix::InnerIterator it(A, c); it; ++it)
+    {
+      const Complex mass = M.coeff(it.row(), c);
+      if(it.row() == c)
+      {
+        m.emplace_back(c, c, mass);
+        continue;
+      }
+      const double weight = (it.value() * std::conj(SI::unit(mass))).real();
+      a.emplace_back(it.row(), c, weight);
+      row_sum[it.row()] += weight;
+      m.emplace_back(it.row(), c, std::abs(mass));
+    }
+  for(Eigen::Index i = 0; i < A.rows(); ++i) a.emplace_back(i, i, -row_sum[i]);
+  A.setFromTriplets(a.begin(), a.end());
+  M.setFromTriplets(m.begin(), m.end());
+}
+
+static bool parse(int argc, char** argv, Options& o)
+{
+  for(int i = 2; i + 1 < argc; i += 2)
+  {
+    const std::string a = argv[i], v = argv[i + 1];
+    if(a == "--degree") o.degree = std::atoi(v.c_str());
+    else if(a == "--sweeps") o.sweeps = std::atoi(v.c_str());
+    else if(a == "--over-correction") o.over_correction = std::atof(v.c_str());
+    else if(a == "--prolongation") o.smoothed = v == "smoothed";
+    else if(a == "--block") o.block = std::max(1, std::atoi(v.c_str()));
+    else if(a == "--preconditioner") o.exact = v == "exact";
+    else if(a == "--shift-fraction") o.shift_fraction = std::atof(v.c_str());
+    else if(a == "--strength") o.strength = std::atof(v.c_str());
+    else if(a == "--transport") o.scalar = v == "none";
+    else return false;
+  }
+  return argc >= 2 && argc % 2 == 0;
+}
+
+// The start: the coarsest level's smallest eigenvector by inverse
+// iteration, prolongated, with one smoothing step per level.
+static Vector start_vector(const Hierarchy& h)
+{
+  Vector x = Vector::Ones(h.B.back().rows());
+  for(int k = 0; k < 30; ++k)
+  {
+    x = h.coarsest.solve(h.M.back() * x);
+    x /= x.norm();
+  }
+  for(std::size_t l = h.P.size(); l-- > 0;)
+  {
+    x = h.P[l] * x;
+    const Vector b = h.M[l] * x;
+    h.smooth(l, b, x);
+  }
+  return x;
 }
 
 int main(int argc, char** argv)
 {
-  if(argc < 2)
+  Options o;
+  if(!parse(argc, argv, o))
   {
-    std::cerr << "usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W] [--prolongation plain|smoothed]\n";
+    std::cerr << "usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W] "
+                 "[--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact] "
+                 "[--shift-fraction F] [--transport connection|none] [--strength THETA]\n";
     return 1;
-  }
-  int degree = 4, sweeps = 2;
-  double over = 1.;
-  bool smoothed = false;
-  for(int i = 2; i + 1 < argc; i += 2)
-  {
-    const std::string a = argv[i];
-    if(a == "--degree") degree = std::atoi(argv[i + 1]);
-    else if(a == "--sweeps") sweeps = std::atoi(argv[i + 1]);
-    else if(a == "--over-correction") over = std::atof(argv[i + 1]);
-    else if(a == "--prolongation") smoothed = std::string(argv[i + 1]) == "smoothed";
   }
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(argv[1], mesh) || mesh.is_empty())
@@ -174,39 +326,30 @@ int main(int argc, char** argv)
   SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
   auto t = Clock::now();
   const SMDF::Direction_field_result direct =
-    field.compute(dir, CGAL::parameters::degree(degree).vertex_coefficient_map(coefficient));
+    field.compute(dir, CGAL::parameters::degree(o.degree).vertex_coefficient_map(coefficient));
   const double direct_ms = ms_since(t);
   if(direct.components.size() != 1)
   {
     std::cerr << "one component only\n";
     return 1;
   }
-  const auto am = field.energy_and_mass_matrices(degree, 0.);
-  const Matrix &A = am.first, &M = am.second;
+  auto matrices = field.energy_and_mass_matrices(o.degree, 0.);
+  Matrix &A = matrices.first, &M = matrices.second;
+  if(o.scalar) remove_transport(A, M);
   const double scale = A.diagonal().real().sum() / M.diagonal().real().sum();
+  // B = A + epsilon M, positive definite: a tiny positive epsilon, or minus a fraction of lambda_1
+  const double lambda_1 = direct.components[0].eigenvalue;
+  const double epsilon = o.shift_fraction > 0. && !o.scalar ? -o.shift_fraction * lambda_1 : 1e-8 * scale;
 
   t = Clock::now();
-  Hierarchy h(A, M, 1e-8 * scale, 5000, smoothed);
-  h.sweeps = sweeps;
-  h.over_correction = over;
+  const Hierarchy h(Matrix(A + epsilon * M), M, 5000, o);
   const double setup_ms = ms_since(t);
-  // start: the coarsest level's smallest eigenvector by inverse iteration, prolongated and smoothed
+  const double factor = h.vcycle_factor(12);
   t = Clock::now();
-  Vector xc = Vector::Ones(h.B.back().rows());
-  for(int k = 0; k < 30; ++k)
-  {
-    xc = h.coarsest.solve(h.M.back() * xc);
-    xc /= xc.norm();
-  }
-  for(std::size_t l = h.P.size(); l-- > 0;)
-  {
-    xc = h.P[l] * xc;
-    const Vector b = h.M[l] * xc;  // one smoothing step of inverse iteration on the level
-    h.smooth(l, b, xc);
-  }
+  const Vector start = start_vector(h);
   const double start_ms = ms_since(t);
   t = Clock::now();
-  const Eigenpair e = lobpcg(A, M, h, xc, scale, 1e-10, 2000);
+  const Eigenpair e = lobpcg(A, M, h, start, o.block, scale, 1e-10, 2000);
   const double lobpcg_ms = ms_since(t);
 
   Vector u(A.rows());
@@ -214,10 +357,16 @@ int main(int argc, char** argv)
   const double cosine = std::abs(u.dot(M * e.x)) / std::sqrt(u.dot(M * u).real() * e.x.dot(M * e.x).real());
   std::cout << argv[1] << ": " << A.rows() << " vertices, levels";
   for(const Matrix& B : h.B) std::cout << " " << B.rows();
-  std::cout << "\n  direct: " << direct_ms << " ms, " << direct.iterations << " solves, eigenvalue "
-            << direct.components[0].eigenvalue << "\n  multigrid LOBPCG (sweeps " << sweeps << ", over-correction "
-            << over << (smoothed ? ", smoothed" : ", plain") << " prolongation): hierarchy " << setup_ms << " ms, start " << start_ms << " ms, " << e.iterations
-            << " iterations " << lobpcg_ms << " ms, residual " << e.residual << ", eigenvalue " << e.lambda
-            << ", 1 - |cos| to the direct eigenvector " << 1. - cosine << "\n";
+  std::cout << "\n  direct: " << direct_ms << " ms, " << direct.iterations << " solves, eigenvalue " << lambda_1;
+  std::cout << "\n  V-cycle (sweeps " << o.sweeps << ", over-correction " << o.over_correction
+            << (o.smoothed ? ", smoothed" : ", plain") << " prolongation" << (o.scalar ? ", transport removed" : "");
+  if(o.strength > 0.) std::cout << ", strength " << o.strength;
+  std::cout << "): energy-norm factor " << factor << " per cycle";
+  std::cout << "\n  LOBPCG (" << (o.exact ? "exact solve" : "V-cycle") << ", block " << o.block << ", shift "
+            << epsilon / scale << " x scale): hierarchy " << setup_ms << " ms, start " << start_ms << " ms, "
+            << e.iterations << " iterations " << lobpcg_ms << " ms, residual " << e.residual << ", eigenvalue "
+            << e.lambda;
+  if(!o.scalar) std::cout << ", 1 - |cos| to the direct eigenvector " << 1. - cosine;
+  std::cout << "\n";
   return 0;
 }
