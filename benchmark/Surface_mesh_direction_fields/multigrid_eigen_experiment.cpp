@@ -8,13 +8,14 @@
 // eigenvalues and the angle between the two eigenvectors.
 //   usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W]
 //            [--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact]
-//            [--shift-fraction F] [--transport connection|none] [--strength THETA]
+//            [--shift-fraction F] [--transport connection|none] [--strength THETA] [--augment K]
 // --shift-fraction F shifts B to A - F lambda_1 M (lambda_1 from the direct
 // path: the ideal shift, for measurement only). --transport none replaces
 // the pencil by the scalar cotangent Laplacian and mass (the transport
 // removed), a control that tells the connection's part in the V-cycle's rate
 // from the mesh's. --strength THETA aggregates along strong couplings only
-// (strong_couplings()).
+// (strong_couplings()). --augment K keeps the coarsest level's next K
+// eigenvectors, prolongated, in every LOBPCG basis.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -48,7 +49,7 @@ static double ms_since(Clock::time_point t)
 
 struct Options
 {
-  int degree = 4, sweeps = 2, block = 1;
+  int degree = 4, sweeps = 2, block = 1, augment = 0;
   double over_correction = 1., shift_fraction = 0., strength = 0.;
   bool smoothed = false, exact = false, scalar = false;
 };
@@ -208,7 +209,7 @@ static Block ritz_vectors(const Matrix& A, const Block& S, Eigen::Index count, B
 // their preconditioned residuals, P the last update outside span X);
 // converged when the first vector's relative residual is below tol.
 static Eigenpair lobpcg(const Matrix& A, const Matrix& M, const Hierarchy& h, const Vector& start, int block,
-                        double scale, double tol, int max_iterations)
+                        const Block& augmentation, double scale, double tol, int max_iterations)
 {
   const Eigen::Index n = A.rows();
   Block X(n, block), P(n, 0), C;
@@ -224,9 +225,10 @@ static Eigenpair lobpcg(const Matrix& A, const Matrix& M, const Hierarchy& h, co
     e.lambda = theta[0];
     e.residual = R.col(0).norm() / (scale * MX.col(0).norm());
     if(e.residual < tol || e.iterations == max_iterations) break;
-    Block Z(n, R.cols() + P.cols());
+    Block Z(n, R.cols() + P.cols() + augmentation.cols());
     for(Eigen::Index j = 0; j < R.cols(); ++j) Z.col(j) = h.precondition(R.col(j));
-    Z.rightCols(P.cols()) = P;
+    Z.middleCols(R.cols(), P.cols()) = P;
+    Z.rightCols(augmentation.cols()) = augmentation;
     for(int pass = 0; pass < 2; ++pass)
     {
       project_out(M, X, Z);
@@ -279,6 +281,7 @@ static bool parse(int argc, char** argv, Options& o)
     else if(a == "--block") o.block = std::max(1, std::atoi(v.c_str()));
     else if(a == "--preconditioner") o.exact = v == "exact";
     else if(a == "--shift-fraction") o.shift_fraction = std::atof(v.c_str());
+    else if(a == "--augment") o.augment = std::max(0, std::atoi(v.c_str()));
     else if(a == "--strength") o.strength = std::atof(v.c_str());
     else if(a == "--transport") o.scalar = v == "none";
     else return false;
@@ -286,23 +289,35 @@ static bool parse(int argc, char** argv, Options& o)
   return argc >= 2 && argc % 2 == 0;
 }
 
-// The start: the coarsest level's smallest eigenvector by inverse
-// iteration, prolongated, with one smoothing step per level.
-static Vector start_vector(const Hierarchy& h)
+// The coarsest level's `count` smallest eigenvectors by subspace inverse
+// iteration, prolongated, with one smoothing step per level: column 0 is
+// the start; the others, with --augment, stay in every LOBPCG basis so that
+// Rayleigh-Ritz, not the iteration, separates the crowded lowest modes.
+static Block coarse_eigenvectors(const Hierarchy& h, Eigen::Index count)
 {
-  Vector x = Vector::Ones(h.B.back().rows());
+  const Matrix &Bc = h.B.back(), &Mc = h.M.back();
+  Block Y = Block::Random(Bc.rows(), count);
+  Y.col(0).setOnes();
   for(int k = 0; k < 30; ++k)
   {
-    x = h.coarsest.solve(h.M.back() * x);
-    x /= x.norm();
+    for(Eigen::Index j = 0; j < count; ++j) Y.col(j) = h.coarsest.solve(Mc * Y.col(j));
+    Y = m_orthonormal(Mc, Y);
   }
+  Block C;
+  Eigen::VectorXd values;
+  Y = ritz_vectors(Bc, Y, Y.cols(), C, values);
   for(std::size_t l = h.P.size(); l-- > 0;)
   {
-    x = h.P[l] * x;
-    const Vector b = h.M[l] * x;
-    h.smooth(l, b, x);
+    Y = h.P[l] * Y;
+    for(Eigen::Index j = 0; j < Y.cols(); ++j)
+    {
+      Vector y = Y.col(j);
+      const Vector b = h.M[l] * y;
+      h.smooth(l, b, y);
+      Y.col(j) = y;
+    }
   }
-  return x;
+  return Y;
 }
 
 int main(int argc, char** argv)
@@ -312,7 +327,7 @@ int main(int argc, char** argv)
   {
     std::cerr << "usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W] "
                  "[--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact] "
-                 "[--shift-fraction F] [--transport connection|none] [--strength THETA]\n";
+                 "[--shift-fraction F] [--transport connection|none] [--strength THETA] [--augment K]\n";
     return 1;
   }
   Mesh mesh;
@@ -346,10 +361,12 @@ int main(int argc, char** argv)
   const double setup_ms = ms_since(t);
   const double factor = h.vcycle_factor(12);
   t = Clock::now();
-  const Vector start = start_vector(h);
+  const Block coarse = coarse_eigenvectors(h, 1 + o.augment);
+  const Vector start = coarse.col(0);
+  const Block augmentation = coarse.rightCols(o.augment);
   const double start_ms = ms_since(t);
   t = Clock::now();
-  const Eigenpair e = lobpcg(A, M, h, start, o.block, scale, 1e-10, 2000);
+  const Eigenpair e = lobpcg(A, M, h, start, o.block, augmentation, scale, 1e-10, 2000);
   const double lobpcg_ms = ms_since(t);
 
   Vector u(A.rows());
@@ -363,7 +380,8 @@ int main(int argc, char** argv)
   if(o.strength > 0.) std::cout << ", strength " << o.strength;
   std::cout << "): energy-norm factor " << factor << " per cycle";
   std::cout << "\n  LOBPCG (" << (o.exact ? "exact solve" : "V-cycle") << ", block " << o.block << ", shift "
-            << epsilon / scale << " x scale): hierarchy " << setup_ms << " ms, start " << start_ms << " ms, "
+            << epsilon / scale << " x scale, augmented by " << o.augment << "): hierarchy " << setup_ms
+            << " ms, start " << start_ms << " ms, "
             << e.iterations << " iterations " << lobpcg_ms << " ms, residual " << e.residual << ", eigenvalue "
             << e.lambda;
   if(!o.scalar) std::cout << ", 1 - |cos| to the direct eigenvector " << 1. - cosine;
