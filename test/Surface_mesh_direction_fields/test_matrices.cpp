@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/subnormals.h>
 
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -47,6 +48,7 @@
 #include <cstring>
 #include <complex>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <thread>
 #include <utility>
@@ -66,6 +68,7 @@ int main()
 {
   Test_report report("matrices");
   check_huge_page_advice(report);
+  check_subnormals_flushed(report);
   check_components(report);
 
   {

@@ -346,6 +346,62 @@ static void check_single_precision_factorization(Test_report& report, int g)
 #endif
 
 
+// Subnormal numbers flushed to zero in single precision (subnormals.h): the
+// guard's mode on the calling thread and its restoration, and a
+// single-precision factor without subnormal entries where the fill decays
+// below float's range (a grid's matrix with a large diagonal: without the
+// flush, thousands of its entries are subnormal).
+static void check_subnormals_flushed(Test_report& report)
+{
+  typedef SI::Subnormals_flushed_in_scope<std::complex<float> > Flushed_single;
+  typedef SI::Subnormals_flushed_in_scope<std::complex<double> > Flushed_double;
+  const std::string name = "subnormal numbers in single precision";
+  volatile float tiny_float = 1e-20f;  // volatile: computed at run time, in the thread's mode
+  volatile double tiny_double = 1e-160;
+  const float subnormal = tiny_float * tiny_float;
+  bool flushed_inside = false, double_kept = false;
+  {
+    const Flushed_double unchanged;
+    double_kept = tiny_double * tiny_double != 0.;
+    const Flushed_single flushed;
+    flushed_inside = tiny_float * tiny_float == 0.f;
+  }
+  const float after = tiny_float * tiny_float;
+  report.check(subnormal != 0.f && after == subnormal && double_kept,
+               name + ": the thread's mode is restored after the guard, and a double-precision guard changes nothing");
+  report.check(flushed_inside == Flushed_single::flushes(),
+               name + ": inside the single-precision guard, a product below float's range is zero (where the "
+                      "processor has the SSE control register)");
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+  if(!SI::has_dense_kernels || !Flushed_single::flushes()) return;
+  typedef SMDF::Cholmod_supernodal_solver Cholmod;
+  SI::Complex_sparse_matrix S = grid_matrix(120);
+  S.diagonal().array() += Complex(6., 0.);
+  const SI::Complex_sparse_matrix lower = S.triangularView<Eigen::Lower>();
+  Cholmod solver;
+  SI::Factored_matrix<Cholmod>(solver).factor(lower);
+  const cholmod_factor* L = solver.factorization().factor();
+  std::vector<std::complex<float> > values(L->xsize);
+  const SI::Supernodal_factor_view<int, std::complex<float> > view = SI::supernodal_view(*L, values.data());
+  const SI::Supernodal_solve_plan plan(view);
+  const SI::Supernodal_updates<int> updates(view);
+  const Eigen::SparseMatrix<std::complex<float> > permuted =
+    SI::with_values_in_precision<std::complex<float> >(SI::permuted_lower_triangle(lower, view.permutation));
+  const std::ptrdiff_t failed = SI::supernodal_factorize(view, values.data(), permuted, updates, plan);
+  std::size_t subnormals = 0, zeros = 0;
+  for(const std::complex<float>& x : values)
+  {
+    for(const float part : {x.real(), x.imag()})
+      if(part != 0.f && std::abs(part) < std::numeric_limits<float>::min()) ++subnormals;
+    if(x == std::complex<float>(0.f, 0.f)) ++zeros;
+  }
+  report.check(failed < 0 && subnormals == 0 && zeros > 0,
+               name + ": a factor whose fill decays below float's range holds no subnormal entry (" +
+                 std::to_string(subnormals) + " subnormal, " + std::to_string(zeros) + " zero of " +
+                 std::to_string(values.size()) + ")");
+#endif
+}
+
 // The VmFlags of the mapping of /proc/self/smaps that holds address a ("" if
 // not found or /proc is not there).
 static std::string vm_flags_of(const void* a)

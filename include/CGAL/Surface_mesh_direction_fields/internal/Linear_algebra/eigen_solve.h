@@ -150,7 +150,8 @@ struct Eigen_solve_result
   double shift = 0.;
   bool shift_rejected = false;
   // whether A + shift M was factored in single precision, and whether the
-  // iteration then stalled and factored it again in double precision
+  // iteration then stalled and factored a single-precision factor's shift
+  // again in double precision
   bool single_precision = false;
   bool refactored_in_double = false;
 };
@@ -593,13 +594,15 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
   // On a stall the shift moves towards the best Ritz value theta (an upper
-  // bound of lambda_1, far tighter than the coarse bound by then), factored
-  // in double precision:
+  // bound of lambda_1, far tighter than the coarse bound by then):
   // where many eigenvalues crowd just above lambda_1 (surfaces of high
   // genus) the rate (lambda_1 - sigma) / (lambda_2 - sigma) is close to 1
   // unless sigma is close to lambda_1. The factorization tells whether the
   // new shift is still below lambda_1; if not, the old one is factored again
   // (in double precision, as a single-precision factor is after a stall).
+  // The new shift is factored in single precision where the first one may
+  // be: it stays below lambda_1 by a fraction of theta - sigma, so the
+  // solve's relative error stays far below 1.
   int reshifts = 0;
   auto refactor = [&](double theta) {
     const auto start = Clock::now();
@@ -612,11 +615,16 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
       ++reshifts;
       tried = true;
       const double closer = theta - options.reshift_fraction * (theta - sigma);
+      factored.allow_single_precision(options.single_precision);
       moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
+      factored.allow_single_precision(false);
       if(moved) result.shift = -closer;
     }
-    if(!moved && (tried || single)) factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
-    result.refactored_in_double = result.refactored_in_double || single;
+    if(!moved && (tried || single))
+    {
+      factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
+      result.refactored_in_double = result.refactored_in_double || single;
+    }
     refactorization_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   };
 

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/subnormals.h>
 
 #include <CGAL/assertions.h>
 
@@ -55,7 +56,10 @@
 // precision of its entries: std::complex<double>, or std::complex<float>
 // (the single-precision kernels), for a factor that half the memory holds
 // and half the time reads, where inexact solves are enough
-// (factored_matrix.h).
+// (factored_matrix.h). In single precision the threads that run the
+// package's kernels flush subnormal numbers to zero (subnormals.h): the fill
+// entries that decay below float's range would otherwise take the
+// processor's slow path.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -276,6 +280,7 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
       if(std::is_same<Subtree_kernels, Dense_kernels<typename Scalar::value_type> >::value)
         one_thread_each = std::make_unique<Single_threaded_blas>();
       parallel_for_each_task(tasks.size(), [&](std::size_t i) {
+        const Subnormals_flushed_in_scope<Scalar> flushed;  // on this task's thread (subnormals.h)
         const Supernodal_solve_plan::Task& task = tasks[order[i]];
         Supernode_workspace<Index, Scalar> workspace(L.n);
         for(std::size_t s = task.first; s <= task.last && failed_column.load() < 0 && !poll.stopped(); ++s)
@@ -286,6 +291,7 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
       });
     }
     failed = failed_column.load();
+    const Subnormals_flushed_in_scope<Scalar> flushed;
     Supernode_workspace<Index, Scalar> workspace(L.n);
     for(auto s = plan.top().begin(); s != plan.top().end() && failed < 0 && !poll.stopped(); ++s)
       failed = factor_supernode<Top_kernels>(L, values, lower, updates, *s, workspace);
