@@ -529,6 +529,44 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   Mu = MX.col(0);  // MX = M u (u is next's first column)
 }
 
+// What smallest_eigenpair() does when its iteration stalls: the shift sigma
+// moves towards the best Ritz value theta (an upper bound of lambda_1, far
+// tighter than the coarse bound by then), at most `options.max_reshifts`
+// times: where many eigenvalues crowd just above lambda_1 (surfaces of high
+// genus) the rate (lambda_1 - sigma) / (lambda_2 - sigma) is close to 1
+// unless sigma is close to lambda_1. The new shift is factored in single
+// precision where the first one may be (a pivot that single precision
+// refuses makes it double); the factorization tells whether it is still
+// below lambda_1. If not, the old shift is factored again, in double
+// precision. Once the re-shifts are spent, a stall with a single-precision
+// factor factors its shift again in double precision (a single-precision
+// factor too inexact for a shift close to lambda_1 thus costs stalls, not
+// the convergence).
+template <typename SparseSolver>
+void refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double theta,
+                          const Eigen_solve_options& options, int& reshifts, Factored_matrix<SparseSolver>& factored,
+                          Eigen_solve_result& result)
+{
+  const double sigma = -result.shift;
+  const bool single = factored.holds_single_precision();
+  bool tried = false, moved = false;
+  if(reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma)
+  {
+    ++reshifts;
+    tried = true;
+    const double closer = theta - options.reshift_fraction * (theta - sigma);
+    factored.allow_single_precision(options.single_precision);
+    moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
+    factored.allow_single_precision(false);
+    if(moved) result.shift = -closer;
+  }
+  if(!moved && (tried || single))
+  {
+    factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
+    result.refactored_in_double = result.refactored_in_double || single;
+  }
+}
+
 // The smallest eigenpair of the pencil (A, M) (user manual, section "The
 // Smoothest Field").
 //
@@ -593,38 +631,11 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
-  // On a stall the shift moves towards the best Ritz value theta (an upper
-  // bound of lambda_1, far tighter than the coarse bound by then):
-  // where many eigenvalues crowd just above lambda_1 (surfaces of high
-  // genus) the rate (lambda_1 - sigma) / (lambda_2 - sigma) is close to 1
-  // unless sigma is close to lambda_1. The factorization tells whether the
-  // new shift is still below lambda_1; if not, the old one is factored again
-  // (in double precision, as a single-precision factor is after a stall).
-  // The new shift is factored in single precision where the first one may
-  // be: it stays below lambda_1 by a fraction of theta - sigma, so the
-  // solve's relative error stays far below 1.
   int reshifts = 0;
   auto refactor = [&](double theta) {
     const auto start = Clock::now();
     options_after_analysis.same_pattern = true;
-    const double sigma = -result.shift;
-    const bool single = factored.holds_single_precision();
-    bool tried = false, moved = false;
-    if(reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma)
-    {
-      ++reshifts;
-      tried = true;
-      const double closer = theta - options.reshift_fraction * (theta - sigma);
-      factored.allow_single_precision(options.single_precision);
-      moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
-      factored.allow_single_precision(false);
-      if(moved) result.shift = -closer;
-    }
-    if(!moved && (tried || single))
-    {
-      factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
-      result.refactored_in_double = result.refactored_in_double || single;
-    }
+    refactor_after_stall(A, M, theta, options, reshifts, factored, result);
     refactorization_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   };
 
