@@ -7,8 +7,8 @@
 # too: the library tests, the examples, the viewer, the Python module, the
 # find_package consumer, and the program's files compared byte for byte with
 # the first build's (the program's own file-handling tests, the tests that
-# call nothing of CGAL and the assertion build of test_robustness run once,
-# in the first build).
+# call nothing of CGAL and the tests of build variants, assertions on and two
+# default solvers in one program, run once, in the first build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh tests
@@ -23,7 +23,7 @@ if [ -f "$cgal6/lib/cmake/CGAL/CGALConfig.cmake" ]; then
   start=$(date +%s)
   cmake -S . -B build-cgal6 -DCMAKE_BUILD_TYPE=Release -DSMDF_BUILD_TESTS=ON \
         -DCGAL_DIR="$(cd "$cgal6" && pwd)" -DSMDF_REFERENCE_PROGRAM="$PWD/build/bin/direction_field" \
-        -DSMDF_TESTS_WITHOUT_CGAL=OFF -DSMDF_HEADER_ONLY_CONSUMER=OFF -DSMDF_BUILD_ASSERTION_TESTS=OFF
+        -DSMDF_TESTS_WITHOUT_CGAL=OFF -DSMDF_HEADER_ONLY_CONSUMER=OFF -DSMDF_BUILD_VARIANT_TESTS=OFF
   cmake --build build-cgal6 -j "$jobs"
   (cd build-cgal6 && ctest --output-on-failure -j "$jobs" -LE program)
   echo "== CGAL 6.1.1 build and tests: $(( $(date +%s) - start )) s"
