@@ -87,6 +87,47 @@ void check_single_precision_eigen_solve(Test_report& report, const std::string& 
                  ") and the eigenpair is found");
 }
 
+// The early move of the shift: the bound early_reshift_target() gives from a Ritz pair near the eigenpair lies
+// between the first shift and lambda_1, it is not given while few solves remain or with a gain of 0, and an
+// iteration that moves its shift only early (no stall declared) moves it closer, stays below lambda_1 and finds
+// the eigenpair.
+template <typename Solver, typename Same_eigenpair>
+void check_early_reshift(Test_report& report, const std::string& name, const SI::Complex_sparse_matrix& A,
+                         const SI::Complex_sparse_matrix& M, SI::Eigen_solve_options options,
+                         const SI::Eigen_solve_result& reference, const SI::Eigen_solve_result& shifted,
+                         const Same_eigenpair& same_eigenpair)
+{
+  options.early_reshift_gain = SI::Eigen_solve_options().early_reshift_gain;
+  const SI::Hermitian_pencil pencil(A, M);
+  const SI::Complex_vector x = reference.vector + 1e-7 * SI::random_start_vector(A.rows(), 7);
+  const SI::Complex_vector Ax = A * x, Mx = M * x;
+  const double theta = x.dot(Ax).real() / x.dot(Mx).real();
+  const SI::Complex_vector r = Ax - theta * Mx;
+  const double sigma = -shifted.shift, lambda_1 = reference.eigenvalue;
+  const double target = SI::early_reshift_target(pencil, r, x, Mx, theta, sigma, {1., 0.5, 0.25}, options);
+  std::cout << name << ": early target " << target << " for theta " << theta << ", lambda_1 " << lambda_1
+            << ", first shift " << sigma << "\n";
+  report.check(target > sigma && target <= lambda_1 && lambda_1 < theta,
+               name + ": the residual's bound lies between the first shift and lambda_1 (" + std::to_string(target) + ")");
+  const double late = SI::early_reshift_target(pencil, r, x, Mx, theta, sigma, {1e-8, 1e-9, 1e-10}, options);
+  options.early_reshift_gain = 0.;
+  const double off = SI::early_reshift_target(pencil, r, x, Mx, theta, sigma, {1., 0.5, 0.25}, options);
+  report.check(std::isnan(late) && std::isnan(off),
+               name + ": no early move where few solves remain, nor with a gain of 0");
+
+  options.early_reshift_gain = SI::Eigen_solve_options().early_reshift_gain;
+  options.early_reshift_min_solves = 0.;
+  options.stall_window = 1000;
+  Solver solver;
+  SI::Factored_matrix<Solver> factored(solver);
+  const SI::Eigen_solve_result early = SI::smallest_eigenpair(A, M, factored, options);
+  std::cout << name << ": early moves " << early.reshifts << ", shift " << sigma << " -> " << -early.shift
+            << ", solves " << early.iterations << "\n";
+  report.check(early.reshifts >= 1 && -early.shift > sigma && -early.shift < lambda_1 && same_eigenpair(early),
+               name + ": moved early, the shift comes closer to lambda_1 and stays below it (" +
+                 std::to_string(-early.shift) + "), and the eigenpair is found");
+}
+
 // The coarse estimate and the shifted factorization of the eigen-solve, with
 // the solver type `Solver`, on a mesh with a simple lambda_1.
 template <typename Solver>
@@ -128,6 +169,7 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
   // reference: no coarse estimate, A + epsilon M factored
   SI::Eigen_solve_options plain;
   plain.coarse_threshold = nv + 1;
+  plain.early_reshift_gain = 0.;  // the shifts below are the first ones (the early moves: check_early_reshift())
   Solver reference_solver;
   SI::Factored_matrix<Solver> reference_factored(reference_solver);
   const SI::Eigen_solve_result reference = SI::smallest_eigenpair(A, M, reference_factored, plain);
@@ -141,6 +183,7 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
   };
   SI::Eigen_solve_options options;
   options.shift_fraction = SI::shift_fraction_for(s);
+  options.early_reshift_gain = 0.;
   Solver solver;
   SI::Factored_matrix<Solver> factored(solver);
   const SI::Eigen_solve_result shifted = SI::smallest_eigenpair(A, M, factored, options);
@@ -154,6 +197,8 @@ static void check_shifted_eigen_solve(Test_report& report, const std::string& so
   report.check(same_eigenpair(shifted), name + ": the shifted solve gives the eigenpair of the plain one");
   report.check(shifted.iterations < reference.iterations, name + ": and needs fewer solves");
   check_single_precision_eigen_solve<Solver>(report, name, A, M, options, shifted, same_eigenpair);
+  if(SI::Factored_matrix<Solver>::detects_indefinite)
+    check_early_reshift<Solver>(report, name, A, M, options, reference, shifted, same_eigenpair);
 
   // a shift above lambda_1: detected, and A + epsilon M factored instead
   options.shift_fraction = 4.;

@@ -387,7 +387,18 @@ static void check_subnormals_flushed(Test_report& report)
   const SI::Supernodal_updates<int> updates(view);
   const Eigen::SparseMatrix<std::complex<float> > permuted =
     SI::with_values_in_precision<std::complex<float> >(SI::permuted_lower_triangle(lower, view.permutation));
+  // as the program and the module run it: the package controls OpenBLAS's threads, here two (OpenBLAS's own
+  // threads do not flush: the top of the factor must run on the calling thread)
+  SMDF::set_openblas_thread_control(true);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS
+  const int blas_threads = openblas_get_num_threads();
+  openblas_set_num_threads(2);
+#endif
   const std::ptrdiff_t failed = SI::supernodal_factorize(view, values.data(), permuted, updates, plan);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_OPENBLAS_THREADS
+  openblas_set_num_threads(blas_threads);
+#endif
+  SMDF::set_openblas_thread_control(false);
   std::size_t subnormals = 0, zeros = 0;
   for(const std::complex<float>& x : values)
   {

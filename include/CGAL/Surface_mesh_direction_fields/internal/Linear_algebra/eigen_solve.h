@@ -114,6 +114,12 @@ struct Eigen_solve_options
   // max_reshifts times (see smallest_eigenpair()).
   double reshift_fraction = 0.15;
   int max_reshifts = 4;
+  // The shift also moves before a stall, to the bound of early_reshift_target(), when that brings it
+  // `early_reshift_gain` times closer to the best Ritz value and the iteration's rate over its last solves leaves
+  // `early_reshift_min_solves` solves or more to the tolerance (a factorization costs several solves; with fewer
+  // left a new one does not pay). A gain of 0 turns this off. These moves count among the `max_reshifts`.
+  double early_reshift_gain = 4.;
+  double early_reshift_min_solves = 12.;
 };
 
 // An eigenvector computed to the relative residual `tolerance` is
@@ -154,6 +160,7 @@ struct Eigen_solve_result
   // again in double precision
   bool single_precision = false;
   bool refactored_in_double = false;
+  int reshifts = 0;  // the moves of the shift tried, on stalls and early (see refactor_after_stall())
 };
 
 // Deterministic complex start vector: the raw 64-bit Mersenne twister output is
@@ -446,13 +453,60 @@ inline Complex_dense_matrix ritz_residuals(const Hermitian_pencil& pencil, const
   return R;
 }
 
+// A shift below the eigenvalue nearest the Ritz value theta of x, from the residual r = A x - theta M x: some
+// eigenvalue lies within ||r||_{M^-1} / ||x||_M of theta, and ||r||_{M^-1} <= sqrt(2) ||r||_{D^-1} for
+// D = diag(M) wherever M >= D / 2, as for the mass matrix of a flat triangle (its eigenvalues relative to its
+// diagonal are 2, 1/2, 1/2). The best Ritz value is an upper bound of lambda_1, so once its nearest eigenvalue is
+// lambda_1 the bound is below lambda_1; before, or where the margin sqrt(2) does not hold, the factorization
+// refuses the shift (refactor_after_stall()). NaN where the shift should not move yet (see
+// Eigen_solve_options::early_reshift_gain); `best_residual` holds the best residual after each solve since
+// the last factorization.
+inline double early_reshift_target(const Hermitian_pencil& pencil, const Complex_vector& r, const Complex_vector& x,
+                                   const Complex_vector& Mx, double theta, double sigma,
+                                   const std::vector<double>& best_residual, const Eigen_solve_options& options)
+{
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t k = best_residual.size() - 1;
+  const double x_norm2 = x.dot(Mx).real();
+  if(k < 2 || !(options.early_reshift_gain > 0.) || !(x_norm2 > 0.)) return none;
+  const double dual_norm2 = (r.cwiseAbs2().array() / pencil.lumped_mass.array()).sum() / x_norm2;
+  const double target = theta - std::sqrt(2. * dual_norm2);
+  if(!(target > sigma) || !(theta - sigma >= options.early_reshift_gain * (theta - target))) return none;
+  const std::size_t m = (std::min)(k, std::size_t(3));
+  const double rate = std::pow(best_residual[k] / best_residual[k - m], 1. / double(m));
+  const double remaining = rate < 1. ? std::log(options.residual_tolerance / best_residual[k]) / std::log(rate)
+                                     : std::numeric_limits<double>::infinity();
+  return remaining >= options.early_reshift_min_solves ? target : none;
+}
+
+// After a step of iterate_with_rayleigh_ritz() with the best Ritz pair (x, theta), residual r: records the
+// step's residual and moves the shift, early (`refactor(theta, target)`, which returns whether it moved or
+// factored), else on a stall (`refactor(theta, NaN)`): when the best residual has not fallen tenfold over the
+// last `options.stall_window` solves (a single step is no test: the residual of the best Ritz pair often grows
+// for a step on the way). A new factorization starts a new history.
+template <typename Refactor>
+void reshift_if_due(const Hermitian_pencil& pencil, const Complex_vector& r, const Complex_vector& x,
+                    const Complex_vector& Mx, const Eigen_solve_options& options, const Refactor& refactor,
+                    const Eigen_solve_result& result, std::vector<double>& best_residual)
+{
+  best_residual.push_back((std::min)(best_residual.back(), result.residual));
+  const double target =
+    early_reshift_target(pencil, r, x, Mx, result.eigenvalue, -result.shift, best_residual, options);
+  const std::size_t k = best_residual.size() - 1;
+  const std::size_t window = (std::max)(std::size_t(1), options.stall_window);
+  if(!std::isnan(target) && refactor(result.eigenvalue, target))
+    best_residual.assign(1, best_residual.back());
+  else if(k >= window && !(best_residual[k] <= 0.1 * best_residual[k - window]))
+  {
+    refactor(result.eigenvalue, std::numeric_limits<double>::quiet_NaN());
+    best_residual.assign(1, best_residual.back());
+  }
+}
+
 // The iteration of smallest_eigenpair() on its factorization, from `start`:
-// see there. Returns the best Ritz vector u and M u. `refactor(theta)` is
-// called when the iteration stalls: when its best residual has not fallen
-// tenfold over the last `options.stall_window` solves (a single step is no
-// test: the residual of the best Ritz pair often grows for a step on the
-// way); theta is the best Ritz value. The iteration then goes on with the
-// same basis.
+// see there. Returns the best Ritz vector u and M u. `refactor` moves the
+// shift (see reshift_if_due()); the iteration then goes on with the same
+// basis.
 
 template <typename SparseSolver, typename Refactor>
 void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_matrix<SparseSolver>& factored,
@@ -517,24 +571,20 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
       result.converged = true;
       break;
     }
-    best_residual.push_back((std::min)(best_residual.back(), result.residual));
-    const std::size_t k_now = best_residual.size() - 1;
-    const std::size_t window = (std::max)(std::size_t(1), options.stall_window);
-    if(k_now >= window && !(best_residual[k_now] <= 0.1 * best_residual[k_now - window]))
-    {
-      refactor(result.eigenvalue);
-      best_residual.assign(1, best_residual.back());  // the next window starts here
-    }
+    reshift_if_due(pencil, R.col(0), u, MX.col(0), options, refactor, result, best_residual);
   }
   Mu = MX.col(0);  // MX = M u (u is next's first column)
 }
 
-// What smallest_eigenpair() does when its iteration stalls: the shift sigma
-// moves towards the best Ritz value theta (an upper bound of lambda_1, far
-// tighter than the coarse bound by then), at most `options.max_reshifts`
-// times: where many eigenvalues crowd just above lambda_1 (surfaces of high
-// genus) the rate (lambda_1 - sigma) / (lambda_2 - sigma) is close to 1
-// unless sigma is close to lambda_1. The new shift is factored in single
+// What smallest_eigenpair() does when its iteration stalls, or earlier when
+// the residual shows lambda_1 close to the best Ritz value theta (an upper
+// bound of lambda_1, far tighter than the coarse bound by then): the shift
+// sigma moves to `target` if it is a number, else towards theta, at most
+// `options.max_reshifts` times: where many eigenvalues crowd just above
+// lambda_1 (surfaces of high genus) the rate (lambda_1 - sigma) /
+// (lambda_2 - sigma) is close to 1 unless sigma is close to lambda_1. An
+// early move (a target) once the moves are spent does nothing and returns
+// false; otherwise the function returns true. The new shift is factored in single
 // precision where the first one may be (a pivot that single precision
 // refuses makes it double); the factorization tells whether it is still
 // below lambda_1. If not, the old shift is factored again, in double
@@ -543,18 +593,21 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
 // factor too inexact for a shift close to lambda_1 thus costs stalls, not
 // the convergence).
 template <typename SparseSolver>
-void refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double theta,
-                          const Eigen_solve_options& options, int& reshifts, Factored_matrix<SparseSolver>& factored,
+bool refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double theta,
+                          double target, const Eigen_solve_options& options, Factored_matrix<SparseSolver>& factored,
                           Eigen_solve_result& result)
 {
   const double sigma = -result.shift;
   const bool single = factored.holds_single_precision();
+  const bool can_move =
+    result.reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma;
+  if(!std::isnan(target) && !(can_move && target > sigma)) return false;
   bool tried = false, moved = false;
-  if(reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma)
+  if(can_move)
   {
-    ++reshifts;
+    ++result.reshifts;
     tried = true;
-    const double closer = theta - options.reshift_fraction * (theta - sigma);
+    const double closer = std::isnan(target) ? theta - options.reshift_fraction * (theta - sigma) : target;
     factored.allow_single_precision(options.single_precision);
     moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
     factored.allow_single_precision(false);
@@ -565,6 +618,7 @@ void refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_m
     factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
     result.refactored_in_double = result.refactored_in_double || single;
   }
+  return true;
 }
 
 // The smallest eigenpair of the pencil (A, M) (user manual, section "The
@@ -631,12 +685,12 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
-  int reshifts = 0;
-  auto refactor = [&](double theta) {
+  auto refactor = [&](double theta, double target) {
     const auto start = Clock::now();
     options_after_analysis.same_pattern = true;
-    refactor_after_stall(A, M, theta, options, reshifts, factored, result);
+    const bool acted = refactor_after_stall(A, M, theta, target, options, factored, result);
     refactorization_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return acted;
   };
 
   const Eigen::Index block = (std::max)(Eigen::Index(1), (std::min)(options.block_size, n));

@@ -292,6 +292,12 @@ std::ptrdiff_t supernodal_factorize_with(const Supernodal_factor_view<Index, Sca
     }
     failed = failed_column.load();
     const Subnormals_flushed_in_scope<Scalar> flushed;
+    // The flush reaches no thread of OpenBLAS's own (no public call sets their floating-point mode): where the
+    // package controls OpenBLAS's threads, the top of a single-precision factor runs on the calling thread.
+    std::unique_ptr<Single_threaded_blas> flushed_top;
+    if(Subnormals_flushed_in_scope<Scalar>::flushes() &&
+       std::is_same<Top_kernels, Dense_kernels<typename Scalar::value_type> >::value && controls_blas_threads())
+      flushed_top = std::make_unique<Single_threaded_blas>();
     Supernode_workspace<Index, Scalar> workspace(L.n);
     for(auto s = plan.top().begin(); s != plan.top().end() && failed < 0 && !poll.stopped(); ++s)
       failed = factor_supernode<Top_kernels>(L, values, lower, updates, *s, workspace);
