@@ -97,7 +97,7 @@ void check_early_reshift(Test_report& report, const std::string& name, const SI:
                          const SI::Eigen_solve_result& reference, const SI::Eigen_solve_result& shifted,
                          const Same_eigenpair& same_eigenpair)
 {
-  options.early_reshift_gain = SI::Eigen_solve_options().early_reshift_gain;
+  options.early_reshift_gain = 4.;
   const SI::Hermitian_pencil pencil(A, M);
   const SI::Complex_vector x = reference.vector + 1e-7 * SI::random_start_vector(A.rows(), 7);
   const SI::Complex_vector Ax = A * x, Mx = M * x;
@@ -115,7 +115,7 @@ void check_early_reshift(Test_report& report, const std::string& name, const SI:
   report.check(std::isnan(late) && std::isnan(off),
                name + ": no early move where few solves remain, nor with a gain of 0");
 
-  options.early_reshift_gain = SI::Eigen_solve_options().early_reshift_gain;
+  options.early_reshift_gain = 4.;
   options.early_reshift_min_solves = 0.;
   options.stall_window = 1000;
   Solver solver;
