@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
