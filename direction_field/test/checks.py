@@ -2,6 +2,7 @@
 once, a summary line and the exit status at the end (imported from the
 test's own folder)."""
 import os
+import math
 import sys
 
 # Open MPI refuses root without the first two; more ranks than cores need the
@@ -32,6 +33,16 @@ class Checks:
     def finish(self):
         print("%d checks, %d failed, %d parts skipped" % (self.count, len(self.failures), len(self.skipped)))
         sys.exit(1 if self.failures else 77 if self.skipped else 0)
+
+
+def bumpy_sphere(levels=3):
+    """The refined octahedron with each coordinate moved by up to 5% (a fixed
+    pattern): no symmetry, so its smoothest fields are unique (a round
+    sphere's lowest eigenvalue is repeated, and which field of that
+    eigenspace a solve returns depends on its rounding)."""
+    points, faces = refined_octahedron(levels)
+    return [tuple(x * (1 + 0.05 * math.sin(12.9898 * i + 78.233 * k)) for k, x in enumerate(p))
+            for i, p in enumerate(points)], faces
 
 
 def refined_octahedron(levels=3):

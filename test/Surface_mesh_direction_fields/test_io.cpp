@@ -414,6 +414,32 @@ static void check_old_polydata_file(Test_report& report)
                "a PolyData file of earlier versions is read (" + error + ")");
 }
 
+// Normals at any scale: near coordinates of 1e±80 the squares of a cross
+// product leave double's range (the field lines of a sphere scaled by 1e80
+// differed from the sphere's), so norms scale by a power of two there.
+void check_normals_at_extreme_scales(Test_report& report)
+{
+  namespace I = SMDF::internal;
+  using I::operator-;
+  using I::operator*;
+  const std::vector<I::Vec3> unit{{0.3, -0.2, 1.1}, {1.7, 0.4, 0.9}, {0.6, 1.3, -0.4}};
+  const std::array<std::size_t, 3> triangle{0, 1, 2};
+  const I::Vec3 expected = I::triangle_unit_normal(unit, triangle);
+  for(double scale : {1e-300, 1e-150, 1e-80, 1e80, 1e150})
+  {
+    std::vector<I::Vec3> scaled = unit;
+    for(I::Vec3& p : scaled)
+      for(double& x : p) x *= scale;
+    std::ostringstream by;
+    by << " scaled by " << scale;
+    const I::Vec3 normal = I::triangle_unit_normal(scaled, triangle);
+    // below about 1e-160 the cross product itself underflows: the library scales such coordinates first
+    report.check(I::norm(normal - expected) < 1e-14 || scale < 1e-160, "the unit normal of a triangle" + by.str());
+    report.check(std::abs(I::norm(scale * I::Vec3{3., 4., 12.}) / (13. * scale) - 1.) < 1e-15,
+                 "the norm of a vector" + by.str());
+  }
+}
+
 int main()
 {
   Test_report report("io");
@@ -423,6 +449,7 @@ int main()
   check_round_trips(report, "icosphere", sphere, 4);
   check_round_trips(report, "icosphere", sphere, 1);
   check_round_trips(report, "icosphere", sphere, 3);
+  check_normals_at_extreme_scales(report);
 
   // A constant field on a planar disk: every face direction is that field.
   {

@@ -18,7 +18,9 @@
 
 #include <array>
 #include <cmath>
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 // Small double-precision 3-vectors, and the reduction of angles. All linear
@@ -40,7 +42,22 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+// |a|, also where the sum of squares overflows or underflows (the squares
+// of a cross product of coordinates near 1e80 or 1e-80 do): a is then scaled
+// by a power of two, which keeps its bits, before squaring. Elsewhere the
+// plain formula, so results do not change for vectors of ordinary size.
+inline double norm(const Vec3& a)
+{
+  const double s = dot(a, a);
+  if(s >= (std::numeric_limits<double>::min)() && s <= (std::numeric_limits<double>::max)()) return std::sqrt(s);
+  double largest = 0.;
+  for(double x : a) largest = (std::max)(largest, std::abs(x));
+  if(!(largest > 0.) || !std::isfinite(largest)) return std::sqrt(s);
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const Vec3 b{std::ldexp(a[0], -exponent), std::ldexp(a[1], -exponent), std::ldexp(a[2], -exponent)};
+  return std::ldexp(std::sqrt(dot(b, b)), exponent);
+}
 inline double squared_norm(const Vec3& a) { return dot(a, a); }
 // The corners (low, high) of the axis-aligned bounding box of `points`
 // (both zero if there are none).

@@ -119,9 +119,10 @@ struct Eigen_solve_options
   // `early_reshift_gain` times closer to the best Ritz value and the iteration's rate over its last solves leaves
   // `early_reshift_min_solves` solves or more to the tolerance (a factorization costs several solves; with fewer
   // left a new one does not pay). A gain of 0 turns this off. These moves count among the `max_reshifts`.
-  // Off by default: on a round sphere (n = 4, a degenerate lowest eigenvalue) the moves made the field differ
-  // between the mesh and the same mesh scaled by 1e299 (the test of the program's hostile input); with a gain of
-  // 4 the solves on a surface of genus 6,400 fall from 48 to 27 (the benchmark's README).
+  // Off by default. Started from the shift -epsilon, a gain of 4 takes a surface of genus 6,400 from 48 to 27
+  // solves. Started from the coarse bound, as the engine starts, the first targets lie above lambda_1 (the Ritz
+  // value's nearest eigenvalue is not yet lambda_1), and each refusal costs a factorization and a move: on the same
+  // surface at s = 0.5 that took 937 solves instead of about 80 (the benchmark's README).
   double early_reshift_gain = 0.;
   double early_reshift_min_solves = 12.;
 };
