@@ -142,6 +142,45 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   }
 }
 
+// From `metis_only_size` rows the analysis asks METIS for its nested
+// dissection directly: the same ordering on every analysis, also on two
+// threads at once (METIS draws from the C library's one random generator),
+// and a solve to the factorization's accuracy.
+static void check_nested_dissection_ordering(Test_report& report)
+{
+  int g = 1;
+  while(Eigen::Index(g) * g < SI::metis_only_size) ++g;
+  const std::string name = "nested dissection, grid " + std::to_string(g) + " x " + std::to_string(g);
+  const SI::Complex_sparse_matrix S = grid_matrix(g);
+  const SI::Complex_sparse_matrix lower = S.triangularView<Eigen::Lower>();
+  SI::Cholmod_supernodal_factorization first, second;
+  first.analyze_pattern(lower);
+  second.analyze_pattern(lower);
+  const cholmod_factor* L = first.factor();
+  const cholmod_factor* L_again = second.factor();
+  report.check(L != nullptr && L->ordering == CHOLMOD_METIS, name + ": ordered by METIS");
+  if(L == nullptr || L_again == nullptr) return;
+  const int* perm = static_cast<const int*>(L->Perm);
+  report.check(L_again->xsize == L->xsize && std::equal(perm, perm + L->n, static_cast<const int*>(L_again->Perm)),
+               name + ": the same ordering on a second analysis");
+  // two analyses at once (ordering_lock.h): without the lock METIS's draws
+  // interleave and both orderings differ from the one of an analysis alone
+  SI::Cholmod_supernodal_factorization left, right;
+  std::thread beside([&] { left.analyze_pattern(lower); });
+  right.analyze_pattern(lower);
+  beside.join();
+  bool same = true;
+  for(const SI::Cholmod_supernodal_factorization* f : {&left, &right})
+    same = same && f->factor() != nullptr && f->factor()->n == L->n &&
+           std::equal(perm, perm + L->n, static_cast<const int*>(f->factor()->Perm));
+  report.check(same, name + ": two analyses on two threads at once give the ordering of one alone");
+  const bool factored = first.factor(lower, true, false);
+  const SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 1);
+  const SI::Complex_sparse_matrix S_full = S;
+  report.check(factored && (S_full * first.solve(B) - B).norm() <= 1e-12 * B.norm(),
+               name + ": factored and solved (residual below 1e-12)");
+}
+
 // The default solver seen through CGAL's SparseLinearAlgebraWithFactorTraits_d:
 // factor, solve, copies sharing the factorization, an indefinite matrix refused.
 static void check_cholmod_solver_concept(Test_report& report)

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/ordering_lock.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_factorization.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
@@ -29,6 +30,7 @@
 #include <algorithm>
 #include <complex>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <string>
 #include <vector>
@@ -221,9 +223,11 @@ private:
     m_plan.reset();
     m_updates.reset();
     cholmod_sparse A = cholmod_view_of_lower_triangle(lower);
-    const bool metis_only = lower.rows() >= metis_only_size;
-    m_common.nmethods = metis_only ? 1 : 0;
-    m_common.method[0].ordering = metis_only ? CHOLMOD_METIS : m_default_first_ordering;
+    const bool metis_only = lower.rows() >= metis_only_size, amd_only = lower.rows() < amd_only_size;
+    m_common.nmethods = metis_only || amd_only ? 1 : 0;
+    m_common.method[0].ordering = metis_only ? CHOLMOD_METIS : amd_only ? CHOLMOD_AMD : m_default_first_ordering;
+    std::unique_lock<std::mutex> one_metis_ordering(metis_ordering_lock(), std::defer_lock);
+    if(!amd_only) one_metis_ordering.lock();
     m_factor = cholmod_analyze(&A, &m_common);
     if(!m_factor && metis_only && m_common.status != CHOLMOD_OUT_OF_MEMORY)
     {

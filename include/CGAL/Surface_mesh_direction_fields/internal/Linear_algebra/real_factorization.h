@@ -16,6 +16,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/ordering_lock.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -94,7 +95,8 @@ public:
       m_simplicial_solver = factored<Simplicial_solver>(S);
       return;
     }
-    std::lock_guard<std::mutex> exclusive(blas_factorization_lock());
+    // CHOLMOD's analysis may call METIS (ordering_lock.h)
+    std::scoped_lock exclusive(blas_factorization_lock(), metis_ordering_lock());
     m_blas_solver = factored<Blas_solver>(S);
   }
 
