@@ -9,13 +9,17 @@
 //   usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W]
 //            [--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact]
 //            [--shift-fraction F] [--transport connection|none] [--strength THETA] [--augment K]
+//            [--damping fixed|spectral]
 // --shift-fraction F shifts B to A - F lambda_1 M (lambda_1 from the direct
 // path: the ideal shift, for measurement only). --transport none replaces
 // the pencil by the scalar cotangent Laplacian and mass (the transport
 // removed), a control that tells the connection's part in the V-cycle's rate
 // from the mesh's. --strength THETA aggregates along strong couplings only
 // (strong_couplings()). --augment K keeps the coarsest level's next K
-// eigenvectors, prolongated, in every LOBPCG basis.
+// eigenvectors, prolongated, in every LOBPCG basis. --damping spectral damps
+// the Jacobi sweeps and the prolongation's smoothing by 4 / (3 rho) per
+// level, rho the spectral radius of D^-1 B by power iteration (printed),
+// instead of 2/3.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -51,6 +55,7 @@ struct Options
 {
   int degree = 4, sweeps = 2, block = 1, augment = 0;
   double over_correction = 1., shift_fraction = 0., strength = 0.;
+  bool spectral = false;  // damping 4 / (3 rho(D^-1 B)) per level instead of 2/3
   bool smoothed = false, exact = false, scalar = false;
 };
 
@@ -85,6 +90,7 @@ struct Hierarchy
 {
   std::vector<Matrix> B, M, P;
   std::vector<Eigen::VectorXd> diagonal;
+  std::vector<double> damping;
   Eigen::SimplicialLDLT<Matrix> coarsest, finest;
   const Options& options;
 
@@ -93,6 +99,7 @@ struct Hierarchy
     B.push_back(B0);
     M.push_back(M0);
     diagonal.push_back(B0.diagonal().real());
+    damping.push_back(damping_of(B0, diagonal.back()));
     while(B.back().rows() > coarse_size)
     {
       const SI::Aggregates g =
@@ -105,7 +112,7 @@ struct Hierarchy
       p.setFromTriplets(entries.begin(), entries.end());
       if(o.smoothed)
       {
-        const Vector inverse = (2. / 3.) * diagonal.back().cwiseInverse().cast<Complex>();
+        const Vector inverse = damping.back() * diagonal.back().cwiseInverse().cast<Complex>();
         p = Matrix(p - inverse.asDiagonal() * (B.back() * p));
         p.prune(Complex(0., 0.));
       }
@@ -114,9 +121,25 @@ struct Hierarchy
       B.push_back(pa * B.back() * p);
       M.push_back(pa * M.back() * p);
       diagonal.push_back(B.back().diagonal().real());
+      damping.push_back(damping_of(B.back(), diagonal.back()));
     }
     coarsest.compute(B.back());
     if(o.exact) finest.compute(B[0]);
+  }
+
+  double damping_of(const Matrix& Bl, const Eigen::VectorXd& d) const
+  {
+    if(!options.spectral) return 2. / 3.;
+    Vector x = Vector::Random(Bl.rows());
+    double rho = 0.;
+    for(int k = 0; k < 30; ++k)
+    {
+      Vector y = (Bl * x).array() / d.array().cast<Complex>();
+      rho = y.norm() / x.norm();
+      x = y / y.norm();
+    }
+    std::cerr << "level " << Bl.rows() << ": rho(D^-1 B) ~ " << rho << "\n";
+    return 4. / (3. * 1.05 * rho);
   }
 
   void smooth(std::size_t l, const Vector& b, Vector& x) const
@@ -124,7 +147,7 @@ struct Hierarchy
     for(int s = 0; s < options.sweeps; ++s)
     {
       const Vector r = b - B[l] * x;
-      x.array() += (2. / 3.) * r.array() / diagonal[l].array().cast<Complex>();
+      x.array() += damping[l] * r.array() / diagonal[l].array().cast<Complex>();
     }
   }
 
@@ -284,6 +307,7 @@ static bool parse(int argc, char** argv, Options& o)
     else if(a == "--augment") o.augment = std::max(0, std::atoi(v.c_str()));
     else if(a == "--strength") o.strength = std::atof(v.c_str());
     else if(a == "--transport") o.scalar = v == "none";
+    else if(a == "--damping") o.spectral = v == "spectral";
     else return false;
   }
   return argc >= 2 && argc % 2 == 0;
@@ -327,7 +351,8 @@ int main(int argc, char** argv)
   {
     std::cerr << "usage: multigrid_eigen_experiment MESH [--degree N] [--sweeps S] [--over-correction W] "
                  "[--prolongation plain|smoothed] [--block K] [--preconditioner multigrid|exact] "
-                 "[--shift-fraction F] [--transport connection|none] [--strength THETA] [--augment K]\n";
+                 "[--shift-fraction F] [--transport connection|none] [--strength THETA] [--augment K] "
+                 "[--damping fixed|spectral]\n";
     return 1;
   }
   Mesh mesh;

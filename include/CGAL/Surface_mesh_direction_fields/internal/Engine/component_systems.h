@@ -197,7 +197,20 @@ public:
   // the component's own one, whose symbolic analysis is reused.
   Factorization& factorization(std::size_t c)
   {
-    if(m_call.user_factorization) return *m_call.user_factorization;
+    if(m_call.user_factorization)
+    {
+      // One solver serves every component of the call, in turn: what it
+      // holds belongs to the component it served last. (Without this, the
+      // aligned field of a second component with the same lambda_t was
+      // solved with the first one's factorization.)
+      if(m_call.user_factorization_component != c)
+      {
+        m_call.user_factorization->aligned_lambda.reset();
+        m_call.user_factorization->refused_lambda.reset();
+        m_call.user_factorization_component = c;
+      }
+      return *m_call.user_factorization;
+    }
     if(m_factorizations.size() != m_geometry.components.list.size())
       m_factorizations.resize(m_geometry.components.list.size());
     if(!m_factorizations[c]) m_factorizations[c] = std::make_unique<Factorization>();
@@ -246,6 +259,7 @@ private:
   {
     bool keep_factorizations = true;
     std::unique_ptr<Factorization> user_factorization;  // the user's solver
+    std::size_t user_factorization_component = std::size_t(-1);  // the component it served last
     const Distributed_backend* distributed = nullptr;
     std::unique_ptr<Mass_operator> mass_operator;        // products with M once it is freed
     // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
