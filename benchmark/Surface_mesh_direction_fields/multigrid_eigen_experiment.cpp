@@ -663,6 +663,8 @@ int main(int argc, char** argv)
   const double cosine = std::abs(u.dot(M * e.x)) / std::sqrt(u.dot(M * u).real() * e.x.dot(M * e.x).real());
   std::cout << argv[1] << ": " << A.rows() << " vertices, levels";
   for(const Matrix& B : h.B) std::cout << " " << B.rows();
+  std::cout << "\n  coarsest level: " << h.B.back().nonZeros() << " entries, factor (AMD, Eigen's LDLT) "
+            << h.coarsest.matrixL().nestedExpression().nonZeros() << " entries";
   std::cout << "\n  direct: " << direct_ms << " ms, " << direct.iterations << " solves, eigenvalue " << lambda_1;
   std::cout << "\n  V-cycle (sweeps " << o.sweeps << ", over-correction " << o.over_correction
             << (o.smoothed ? ", smoothed" : ", plain") << " prolongation" << (o.scalar ? ", transport removed" : "");
