@@ -3,7 +3,7 @@
 #   usage: install_dependencies.sh [main|tests]
 set -euo pipefail
 packages=(cmake make g++ ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
-          libsuitesparse-dev libopenblas-dev libtbb-dev zlib1g-dev pybind11-dev python3-pybind11 python3-numpy python3-dev)
+          libsuitesparse-dev libscotch-dev libopenblas-dev libtbb-dev zlib1g-dev pybind11-dev python3-pybind11 python3-numpy python3-dev)
 if [ "${1:-main}" = tests ]; then
   packages+=(doxygen python3 python3-meshio python3-vtk9 python3-numpy python3-pytest libopenmesh-dev libcgal-qt5-dev
              pkg-config openmpi-bin libpetsc-complex-dev libslepc-complex-dev qt6-base-dev libqt6opengl6-dev

@@ -109,7 +109,7 @@ int main()
     }
     check_parallel_supernodal_solve(report, 200);
     check_cholmod_solver_concept(report);
-    check_nested_dissection_ordering(report);
+    check_nested_dissection_orderings(report);
     check_blas_threads_restored(report);
     // the subtrees with Eigen's kernels (the default), then with OpenBLAS on one thread
     for(bool thread_control : {false, true})

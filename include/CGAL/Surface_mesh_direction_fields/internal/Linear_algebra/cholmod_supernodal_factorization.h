@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/ordering_lock.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/scotch_ordering.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_factorization.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
@@ -60,13 +61,15 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-// From this size of the matrix, the analysis asks METIS directly: CHOLMOD's
-// default (AMD, then METIS as well when AMD's fill is high, keeping the
-// better) ends up choosing METIS on surface meshes from about there on, and
-// asking directly saves the AMD ordering. If METIS is not available the
-// analysis is redone with the defaults. The measurements are in the
-// benchmark's README.
-constexpr Eigen::Index metis_only_size = 600000;
+// From this size of the matrix, the analysis asks for a nested dissection
+// directly: CHOLMOD's default (AMD, then METIS as well when AMD's fill is
+// high, keeping the better) ends up choosing METIS on surface meshes from
+// about there on, and asking directly saves the AMD ordering. The nested
+// dissection is Scotch's with CAMD (scotch_ordering.h) where the package was
+// built with Scotch, in about half of METIS's time, METIS's otherwise; if
+// METIS is not available either the analysis is redone with the defaults.
+// The measurements are in the benchmark's README.
+constexpr Eigen::Index nested_dissection_size = 600000;
 
 // From these sizes (entries of the factor) the package's factorization and
 // its solve of one right-hand side are used: below, CHOLMOD's are as fast or
@@ -158,6 +161,11 @@ public:
   // default); off, CHOLMOD factors every matrix (for comparisons).
   void use_package_factorization(bool used) { m_package_factorization_allowed = used; }
 
+  // Whether matrices from `nested_dissection_size` rows are ordered by Scotch and
+  // CAMD (scotch_ordering.h; the default where Scotch was found) or by
+  // METIS (for comparisons).
+  void use_scotch_ordering(bool used) { m_scotch_ordering = used && scotch_ordering_available; }
+
   // The symbolic analysis of a matrix with the pattern of `lower` (a lower
   // triangle). The next factorization uses it if its matrix has exactly
   // that pattern (it checks), and analyzes again otherwise.
@@ -223,13 +231,14 @@ private:
     m_plan.reset();
     m_updates.reset();
     cholmod_sparse A = cholmod_view_of_lower_triangle(lower);
-    const bool metis_only = lower.rows() >= metis_only_size, amd_only = lower.rows() < amd_only_size;
-    m_common.nmethods = metis_only || amd_only ? 1 : 0;
-    m_common.method[0].ordering = metis_only ? CHOLMOD_METIS : amd_only ? CHOLMOD_AMD : m_default_first_ordering;
+    const bool large = lower.rows() >= nested_dissection_size, amd_only = lower.rows() < amd_only_size;
+    if(large && m_scotch_ordering && analyze_with_scotch(A)) return;
+    m_common.nmethods = large || amd_only ? 1 : 0;
+    m_common.method[0].ordering = large ? CHOLMOD_METIS : amd_only ? CHOLMOD_AMD : m_default_first_ordering;
     std::unique_lock<std::mutex> one_metis_ordering(metis_ordering_lock(), std::defer_lock);
     if(!amd_only) one_metis_ordering.lock();
     m_factor = cholmod_analyze(&A, &m_common);
-    if(!m_factor && metis_only && m_common.status != CHOLMOD_OUT_OF_MEMORY)
+    if(!m_factor && large && m_common.status != CHOLMOD_OUT_OF_MEMORY)
     {
       m_common.nmethods = 0;  // METIS not compiled in: CHOLMOD's defaults
       m_common.method[0].ordering = m_default_first_ordering;
@@ -238,6 +247,21 @@ private:
     }
     check_status(m_factor != nullptr, "ordering the matrix");
     m_analyzed = true;
+  }
+
+  // The analysis on Scotch's and CAMD's ordering; false (nothing analyzed)
+  // if Scotch failed.
+  bool analyze_with_scotch(cholmod_sparse& A)
+  {
+    std::vector<int> perm =
+      scotch_camd_ordering(A, m_common, [this](bool ok, const char* step) { check_status(ok, step); });
+    if(perm.empty()) return false;
+    m_common.nmethods = 1;
+    m_common.method[0].ordering = CHOLMOD_GIVEN;
+    m_factor = cholmod_analyze_p(&A, perm.data(), nullptr, 0, &m_common);
+    check_status(m_factor != nullptr, "analyzing the matrix on its ordering");
+    m_analyzed = true;
+    return true;
   }
 
   // Analyzes `lower` unless the kept analysis applies; returns whether the
@@ -366,6 +390,7 @@ private:
   mutable cholmod_common m_common;  // CHOLMOD's solve takes it non-const (workspace, status)
   cholmod_factor* m_factor = nullptr;
   bool m_analyzed = false, m_package_factorization_allowed = true;
+  bool m_scotch_ordering = scotch_ordering_available;
   bool m_blas_usable = true;  // blas_work_space_available() at the last factorization
   int m_default_first_ordering = 0;
   Pending_pattern m_pending;  // the pattern analyze_pattern() analyzed, until a factorization checks it
