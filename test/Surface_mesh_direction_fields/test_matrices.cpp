@@ -45,6 +45,7 @@
 #include <memory>
 #include <fstream>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <complex>
 #include <iostream>

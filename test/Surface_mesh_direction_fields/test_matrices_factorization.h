@@ -142,6 +142,32 @@ static void check_parallel_supernodal_solve(Test_report& report, int g)
   }
 }
 
+// Scotch's separators depend on the number of threads that find them, and by
+// default it starts one per core, or as many as SCOTCH_PTHREAD_NUMBER says:
+// the package fixes the number, so the environment (here standing in for a
+// machine with another number of cores) changes nothing.
+static void check_scotch_threads_fixed(Test_report& report, const SI::Complex_sparse_matrix& lower,
+                                       const cholmod_factor& L, const std::string& name)
+{
+  const char* variable = "SCOTCH_PTHREAD_NUMBER";
+  const char* before = std::getenv(variable);
+  const std::string saved = before ? before : "";
+  bool same = true;
+  for(const char* threads : {"1", "3"})
+  {
+    setenv(variable, threads, 1);
+    SI::Cholmod_supernodal_factorization other;
+    other.analyze_pattern(lower);
+    const cholmod_factor* L_other = other.factor();
+    same = same && L_other != nullptr && L_other->n == L.n &&
+           std::equal(static_cast<const int*>(L.Perm), static_cast<const int*>(L.Perm) + L.n,
+                      static_cast<const int*>(L_other->Perm));
+  }
+  if(before) setenv(variable, saved.c_str(), 1);
+  else unsetenv(variable);
+  report.check(same, name + ": the same ordering whatever number of threads Scotch would start by itself");
+}
+
 // From `nested_dissection_size` rows the analysis orders by nested dissection
 // directly: Scotch's with CAMD where the package has Scotch, METIS's
 // otherwise (and when asked). Either gives the same ordering on every
@@ -181,6 +207,7 @@ static std::size_t check_nested_dissection_ordering(Test_report& report, bool sc
     same = same && f->factor() != nullptr && f->factor()->n == L->n &&
            std::equal(perm, perm + L->n, static_cast<const int*>(f->factor()->Perm));
   report.check(same, name + ": two analyses on two threads at once give the ordering of one alone");
+  if(scotch) check_scotch_threads_fixed(report, lower, *L, name);
   const bool factored = first.factor(lower, true, false);
   const SI::Complex_dense_matrix B = SI::Complex_dense_matrix::Random(S.rows(), 1);
   const SI::Complex_sparse_matrix S_full = S;

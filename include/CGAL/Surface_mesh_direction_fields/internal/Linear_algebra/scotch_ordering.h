@@ -37,7 +37,8 @@
 // entries; the measurements are in the benchmark's README. Scotch draws its
 // random numbers from a context of its own, seeded here: the ordering is
 // the same on every call, also on several threads at once, without the METIS
-// lock (ordering_lock.h).
+// lock (ordering_lock.h), and on every machine (Scotch runs on a fixed
+// number of threads of its own).
 //
 // Every status Scotch and CHOLMOD report is checked; a failure of Scotch
 // returns an empty ordering and the caller orders with METIS instead.
@@ -97,6 +98,15 @@ class Scotch_ordering_session
   bool m_graph_ready = false, m_context_ready = false, m_bound_ready = false, m_strategy_ready = false;
 
 public:
+  // Scotch's threads for one ordering. Its separators depend on how many
+  // threads find them, even in its deterministic mode, and by default it
+  // starts one per core of the machine (or as many as the environment
+  // variable SCOTCH_PTHREAD_NUMBER says): the ordering, and with it the
+  // field's last digits, would change from one machine to another. A fixed
+  // count keeps them; two threads take half of one thread's time on a
+  // two-core machine (the benchmark's README).
+  static constexpr int thread_count = 2;
+
   Scotch_ordering_session() = default;
   Scotch_ordering_session(const Scotch_ordering_session&) = delete;
   Scotch_ordering_session& operator=(const Scotch_ordering_session&) = delete;
@@ -121,8 +131,9 @@ public:
            "unc=n{sep=/(vert>240)?m{rat=0.8,vert=200,low=h{pass=10},asc=f{bal=0.2}};,ole=s,ose=s}}";
   }
 
-  // The blocks of Scotch's nested dissection: block[k] for the row
-  // eliminated k-th, and that row (`rows`); false if Scotch failed.
+  // The blocks of Scotch's nested dissection, in elimination order: the
+  // rows eliminated k-th for k in [range[b], range[b + 1]) form block b, and
+  // rows[k] is the row eliminated k-th; false if Scotch failed.
   bool order(Symmetric_graph& g, std::vector<SCOTCH_Num>& rows, std::vector<SCOTCH_Num>& range)
   {
     const SCOTCH_Num n = static_cast<SCOTCH_Num>(g.offsets.size() - 1);
@@ -133,6 +144,7 @@ public:
       return false;
     if(SCOTCH_contextInit(&m_context) != 0) return false;
     m_context_ready = true;
+    if(SCOTCH_contextThreadSpawn(&m_context, thread_count, nullptr) != 0) return false;
     if(SCOTCH_contextOptionSetNum(&m_context, SCOTCH_OPTIONNUMDETERMINISTIC, 1) != 0) return false;
     // a generator of the context's own (a context shares Scotch's global
     // one until it is cloned), seeded alike on every call
@@ -147,8 +159,9 @@ public:
     SCOTCH_Num blocks = 0;
     rows.resize(static_cast<std::size_t>(n));
     range.resize(static_cast<std::size_t>(n) + 1);
-    std::vector<SCOTCH_Num> position(static_cast<std::size_t>(n));
-    if(SCOTCH_graphOrder(&m_bound_graph, &m_strategy, position.data(), rows.data(), &blocks, range.data(), nullptr) != 0)
+    // Scotch's direct permutation (the position of each row) is not needed:
+    // a null pointer asks for the inverse one (`rows`) only.
+    if(SCOTCH_graphOrder(&m_bound_graph, &m_strategy, nullptr, rows.data(), &blocks, range.data(), nullptr) != 0)
       return false;
     range.resize(static_cast<std::size_t>(blocks) + 1);
     return true;
