@@ -9,7 +9,9 @@
 //  * every output vector has unit length, is orthogonal to the vertex normal
 //    (ours or the one given by vertex_normal_map), and is finite;
 //  * the documented errors on bad input, with the input left untouched;
-//  * determinism for a seed, and the optional outputs.
+//  * determinism for a seed, and the optional outputs;
+//  * other sparse solvers give the same field, also an aligned one refined
+//    from a single-precision factor.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -344,6 +346,37 @@ struct Generic_ldlt_solver
   }
 };
 
+// An aligned field whose factor the package computes itself (from 2^14
+// entries) is factored in single precision and each solve refined to double
+// precision (user manual, "Performance and Repeated Work"): the field of a
+// double-precision factorization (Eigen's LDL^*), to 1e-9 radians, with the
+// same singular faces; the class's second guidance field on the kept factor
+// also equals a fresh call's.
+static void check_refined_aligned_field(Test_report& report)
+{
+  Mesh mesh;
+  make_lumpy_sphere(mesh, 5);
+  typedef Eigen::SparseMatrix<std::complex<double> > Complex_matrix;
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Complex_matrix> > Ldlt;
+  auto d1 = direction_map(mesh, "v:d1");
+  auto d2 = direction_map(mesh, "v:d2");
+  const auto curvature = SMDF::Principal_curvature_alignment::MAXIMUM;
+  Singularities s1, s2;
+  const SMDF::Direction_field_result refined = SMDF::compute_globally_optimal_directions(
+    mesh, d1, params::degree(4).principal_curvature_alignment(curvature).singularities_output_iterator(std::back_inserter(s1)));
+  const SMDF::Direction_field_result ldlt = SMDF::compute_globally_optimal_directions(
+    mesh, d2,
+    params::degree(4).principal_curvature_alignment(curvature).sparse_linear_solver(Ldlt()).singularities_output_iterator(
+      std::back_inserter(s2)));
+  double worst = 0.;
+  for(Vertex_index v : mesh.vertices()) worst = (std::max)(worst, angle_mod(d1[v], d2[v], 4));
+  std::sort(s1.begin(), s1.end());
+  std::sort(s2.begin(), s2.end());
+  report.check(worst < 1e-9 && s1 == s2 && !s1.empty() && refined.index_sum == 8,
+               "aligned field refined from a single-precision factor: the field of a double-precision one (" +
+                 std::to_string(worst) + " rad, " + std::to_string(s1.size()) + " singular faces)");
+}
+
 static void check_models_and_solvers(Test_report& report)
 {
   Mesh mesh;
@@ -565,6 +598,7 @@ int main()
 {
   Test_report report("fields");
   check_models_and_solvers(report);
+  check_refined_aligned_field(report);
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
   check_given_solver_per_component(report);
 #endif

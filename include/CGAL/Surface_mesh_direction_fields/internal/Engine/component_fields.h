@@ -115,7 +115,7 @@ private:
       Eigen_solve_options options = m_options;
       options.same_pattern = kept.analyzed && !m_systems.user_solver();
       kept.analyzed = true;
-      kept.aligned_lambda.reset();
+      kept.forget_aligned();
       const Energy_and_mass& em = m_systems.matrices(c);
       eig = smallest_eigenpair(em.energy, em.mass, kept.factored, options);
       m_systems.release_factorization(c);
@@ -239,19 +239,24 @@ private:
     if(!(kept.aligned_lambda == lambda))
     {
       const Energy_and_mass& em = m_systems.matrices(c);
-      const Shifted_system system(em.energy, em.mass, lambda, constraints);
-      kept.aligned_lambda.reset();
       const bool factored_ok =
-        system.factor(kept.factored, kept.analyzed && !m_systems.user_solver(), m_systems.detects_indefinite);
+        kept.factor_aligned(Factored_matrix<SparseSolver>::matrix_to_factor(em.energy, em.mass, -lambda),
+                            kept.analyzed && !m_systems.user_solver(), m_systems.detects_indefinite);
       kept.analyzed = true;
       if(factored_ok) kept.aligned_lambda = lambda;
       kept.refused_lambda = factored_ok ? std::nullopt : std::optional<double>(lambda);
       m_timings.factorization_ms += milliseconds_since(start);
       if(!factored_ok) return false;
     }
-    u = kept.factored.solve(Mq);  // without constraints the system is A - lambda M itself
+    // without constraints the system is A - lambda M itself
+    const bool solved = kept.solve_aligned(Mq, u);
+    if(!solved)
+    {
+      kept.forget_aligned();
+      kept.refused_lambda = lambda;
+    }
     m_systems.release_factorization(c);
-    return true;
+    return solved;
   }
 
   // solve_below_smallest_eigenvalue() over the processes of the distributed

@@ -17,6 +17,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
@@ -26,6 +27,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 // The engine's second room: the linear systems of each component (user
@@ -53,6 +55,48 @@ struct Component_factorization
   // one: another guidance field with the same lambda_t then costs one solve
   std::optional<double> aligned_lambda;
   std::optional<double> refused_lambda;  // the last lambda_t found too large
+  // lower(A - lambda_t M) while `factored` holds it in single precision: the
+  // products of the refinement (refined_solve())
+  Complex_sparse_matrix refinement_matrix;
+
+  // Factors S = lower(A - lambda_t M) for an aligned field: in single
+  // precision where the solver can (each solve is then refined to double
+  // precision), in double precision otherwise; false if S is not positive
+  // definite (`check`; otherwise a failure throws, as factor() does).
+  bool factor_aligned(Complex_sparse_matrix S, bool same_pattern, bool check = true)
+  {
+    forget_aligned();
+    factored.allow_single_precision(Factored_matrix<SparseSolver>::factors_lower_triangle);
+    bool factored_ok = true;
+    if(check) factored_ok = factored.factor_if_positive_definite(S, same_pattern);
+    else factored.factor(S, same_pattern);
+    factored.allow_single_precision(false);
+    if(factored_ok && factored.holds_single_precision()) refinement_matrix.swap(S);
+    return factored_ok;
+  }
+
+  // u with S u = b for the S factor_aligned() factored; false if S turned
+  // out not positive definite (the refinement did not converge and the
+  // factorization in double precision failed).
+  bool solve_aligned(const Complex_vector& b, Complex_vector& u)
+  {
+    if(factored.holds_single_precision() && refinement_matrix.rows() != 0)
+    {
+      if(refined_solve(factored, refinement_matrix, b, u)) return true;
+      Complex_sparse_matrix S;
+      S.swap(refinement_matrix);
+      if(!factored.factor_if_positive_definite(S, true)) return false;
+    }
+    u = factored.solve(b);
+    return true;
+  }
+
+  // Forgets the aligned system held (another matrix is factored next).
+  void forget_aligned()
+  {
+    aligned_lambda.reset();
+    Complex_sparse_matrix().swap(refinement_matrix);
+  }
 };
 
 // The settings of one compute().
@@ -205,7 +249,7 @@ public:
       // solved with the first one's factorization.)
       if(m_call.user_factorization_component != c)
       {
-        m_call.user_factorization->aligned_lambda.reset();
+        m_call.user_factorization->forget_aligned();
         m_call.user_factorization->refused_lambda.reset();
         m_call.user_factorization_component = c;
       }
@@ -228,7 +272,8 @@ public:
   // only two products with M besides this factorization, which Mass_operator
   // computes from the faces: the assembly then gives the matrix to factor
   // directly, without A and M (see shift_only()), or A and M are freed before
-  // the factorization, the moment of peak memory.
+  // the factorization, the moment of peak memory. (A single-precision factor
+  // keeps that matrix, a lower triangle, for the refinement of its solves.)
   void factor_aligned_system(std::size_t c, double lambda)
   {
     Factorization& kept = factorization(c);
@@ -246,8 +291,7 @@ public:
       Complex_sparse_matrix().swap(m_matrices[c].energy);
       Complex_sparse_matrix().swap(m_matrices[c].mass);
     }
-    kept.aligned_lambda.reset();
-    const bool factored_ok = kept.factored.factor_if_positive_definite(S, kept.analyzed);
+    const bool factored_ok = kept.factor_aligned(std::move(S), kept.analyzed);
     kept.analyzed = true;
     if(factored_ok) kept.aligned_lambda = lambda;
     kept.refused_lambda = factored_ok ? std::nullopt : std::optional<double>(lambda);
@@ -296,7 +340,7 @@ private:
     for(auto& kept : m_factorizations)  // they factor the old matrices
       if(kept)
       {
-        kept->aligned_lambda.reset();
+        kept->forget_aligned();
         kept->refused_lambda.reset();
       }
   }

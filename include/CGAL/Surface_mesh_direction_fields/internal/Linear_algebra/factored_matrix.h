@@ -62,8 +62,8 @@ namespace internal {
 // specialization below has one). A solve then has the accuracy of a
 // single-precision factor (relative errors of about 1e-3 to 1e-6 on the
 // shared meshes), but reads half the bytes: for iterations that correct
-// their own errors, like the eigen-solve (eigen_solve.h), not for the
-// direct solves of aligned fields.
+// their own errors, like the eigen-solve (eigen_solve.h) and the refined
+// solves of aligned fields (refined_solve() in linear_solves.h).
 template <typename Derived>
 class Shifted_factorization
 {

@@ -34,6 +34,24 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// y = S x for a Hermitian S given by its lower triangle in compressed
+// columns (the form a factorization reads, see matrix_to_factor()): each
+// stored entry below the diagonal acts twice, as S_ij and as conj(S_ij).
+// One pass in column order, on one thread: it serves a few refinement steps
+// (refined_solve() in linear_solves.h), where the solves dominate.
+inline Complex_vector lower_hermitian_times(const Complex_sparse_matrix& lower, const Complex_vector& x)
+{
+  Complex_vector y = Complex_vector::Zero(lower.rows());
+  for(Eigen::Index col = 0; col < lower.outerSize(); ++col)
+    for(Complex_sparse_matrix::InnerIterator it(lower, col); it; ++it)
+    {
+      const Eigen::Index row = it.row();
+      y[row] += it.value() * x[col];
+      if(row != col) y[col] += std::conj(it.value()) * x[row];
+    }
+  return y;
+}
+
 // Y = H X for a Hermitian H stored with both triangles in compressed columns:
 // row i of H is the conjugate of its column i, so each entry of Y is a dot
 // product over one stored column -- contiguous reads, and rows can be

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
 
 #include <Eigen/Sparse>
 
@@ -48,6 +49,45 @@ struct Constraints
     return true;
   }
 };
+
+// The solution x of S x = b, S Hermitian given by its lower triangle
+// `lower`, from `factored`, a factor of S in single precision: conjugate
+// gradients preconditioned by that factor (user manual, "Performance and
+// Repeated Work"). A single-precision solve is accurate to a few digits,
+// and each step multiplies the error by about that accuracy, so two or
+// three steps reach what a double-precision factor gives, for half its
+// factorization's time and memory. The preconditioned residual z estimates
+// the error; the steps stop when it is below 1e-14 of x (its recurrence,
+// unlike a residual computed afresh, keeps falling below the rounding of
+// S x). False, x unusable, if that takes more than `max_steps` steps or a
+// step finds S not positive definite (where lambda is barely below
+// lambda_1 the single factor may be too inexact): the caller then factors
+// in double precision.
+template <typename SparseSolver>
+bool refined_solve(const Factored_matrix<SparseSolver>& factored, const Complex_sparse_matrix& lower,
+                   const Complex_vector& b, Complex_vector& x, int max_steps = 20)
+{
+  x = factored.solve(b);
+  Complex_vector r = b - lower_hermitian_times(lower, x);
+  Complex_vector z = factored.solve(r);
+  Complex_vector p = z;
+  double rz = r.dot(z).real();
+  auto converged = [&] { return !(z.norm() > 1e-14 * x.norm()); };
+  for(int step = 0; step < max_steps && !converged(); ++step)
+  {
+    const Complex_vector Sp = lower_hermitian_times(lower, p);
+    const double curvature = p.dot(Sp).real();
+    if(!(curvature > 0.) || !(rz > 0.)) return false;
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * Sp;
+    z = factored.solve(r);
+    const double rz_next = r.dot(z).real();
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  return converged() && x.allFinite();
+}
 
 // The system (A - lambda M) u = b with u = c on the constrained vertices:
 // factored once (a Cholesky factorization whose success certifies that the
