@@ -113,6 +113,19 @@ inline Aggregates aggregate_vertices(const Complex_sparse_matrix& coupling, doub
   return g;
 }
 
+// The members of each aggregate, contiguous (a counting sort): those of
+// aggregate c are members[first[c]] to members[first[c + 1] - 1], in vertex order.
+inline void aggregate_members(const Aggregates& g, std::vector<Eigen::Index>& first, std::vector<Eigen::Index>& members)
+{
+  first.assign(static_cast<std::size_t>(g.count) + 1, 0);
+  members.resize(g.of_vertex.size());
+  for(Eigen::Index c : g.of_vertex) ++first[static_cast<std::size_t>(c) + 1];
+  for(std::size_t c = 0; c < static_cast<std::size_t>(g.count); ++c) first[c + 1] += first[c];
+  std::vector<Eigen::Index> fill(first.begin(), first.end() - 1);
+  for(std::size_t i = 0; i < g.of_vertex.size(); ++i)
+    members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g.of_vertex[i])]++)] = static_cast<Eigen::Index>(i);
+}
+
 // The coarse pencil (P^* A P, P^* M P) for the prolongation P of the
 // aggregates, (P x_c)_i = phase_i x_c[aggregate_i]: a Rayleigh-Ritz (Galerkin)
 // projection, so its smallest eigenvalue bounds lambda_1 from above. Built
@@ -125,13 +138,9 @@ inline void restrict_to_aggregates(const Complex_sparse_matrix& A, const Complex
                                    const Aggregates& g, Complex_sparse_matrix& Ac, Complex_sparse_matrix& Mc)
 {
   typedef Complex_sparse_matrix::StorageIndex Storage_index;
-  const Eigen::Index n = A.rows(), nc = g.count;
-  // the members of each aggregate, contiguous (counting sort)
-  std::vector<Eigen::Index> first(static_cast<std::size_t>(nc) + 1, 0), members(static_cast<std::size_t>(n));
-  for(Eigen::Index c : g.of_vertex) ++first[static_cast<std::size_t>(c) + 1];
-  for(std::size_t c = 0; c < static_cast<std::size_t>(nc); ++c) first[c + 1] += first[c];
-  std::vector<Eigen::Index> fill(first.begin(), first.end() - 1);
-  for(Eigen::Index i = 0; i < n; ++i) members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g.of_vertex[i])]++)] = i;
+  const Eigen::Index nc = g.count;
+  std::vector<Eigen::Index> first, members;
+  aggregate_members(g, first, members);
 
   struct Entry
   {
