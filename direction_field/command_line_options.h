@@ -47,6 +47,7 @@ struct Options
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
   bool distribute_from_given = false;
   unsigned int distribute_from = 50000;  // --distribute-from: the smallest component spread over the processes
+  std::string huge_pages = "on";  // --huge-pages: malloc's transparent huge pages (huge_pages_rerun.h)
 };
 
 // The largest degree the program accepts. The library computes any degree up
@@ -131,6 +132,12 @@ inline const Option_help option_help[] = {
                                          "the processes, smaller ones solved by the first (default 50000)"},
   {"Performance", "--petsc-options TEXT", "PETSc's own options for --solver petsc, as one argument "
                                          "(say \"-mat_mumps_icntl_14 50 -log_view\")"},
+  {"Performance", "--huge-pages on|off", "on (default): the program runs itself again with glibc's malloc asking "
+                                        "for transparent huge pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), "
+                                        "which saves most of the page faults of a large mesh; only for mesh "
+                                        "files of 4 MB or more, not when GLIBC_TUNABLES is set, under mpirun or "
+                                        "under a memory limit. The results are the same; the JSON's huge_pages "
+                                        "says which ran"},
   {"Program", "--help, -h", "this text"},
   {"Program", "--version", "the program's version"},
 };
@@ -149,6 +156,7 @@ inline const char* const usage =
   "                       [--matching FILE]\n"
   "                       [--solver default|petsc]"
   " [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
+  "                       [--huge-pages on|off]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -265,6 +273,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--on") o.on = v;
   else if(a == "--petsc-options") o.petsc_options = v;
   else if(a == "--distribute-from") { o.distribute_from = parse_count(a, v); o.distribute_from_given = true; }
+  else if(a == "--huge-pages") o.huge_pages = v;
   else return false;
   return true;
 }
@@ -320,6 +329,8 @@ inline void check_options(const Options& o)
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
   if(o.solver != "default" && o.solver != "petsc")
     throw Usage_error("--solver expects default or petsc, got '" + o.solver + "'");
+  if(o.huge_pages != "on" && o.huge_pages != "off")
+    throw Usage_error("--huge-pages expects on or off, got '" + o.huge_pages + "'");
   if(!o.petsc_options.empty() && o.solver != "petsc") throw Usage_error("--petsc-options needs --solver petsc");
   if(o.distribute_from_given && o.solver != "petsc") throw Usage_error("--distribute-from needs --solver petsc");
 #ifndef SMDF_WITH_PETSC

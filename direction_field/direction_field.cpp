@@ -22,6 +22,7 @@
 #include "exchange_files.h"
 #include "face_field_run.h"
 #include "file_io/optional_named_parameters.h"
+#include "huge_pages_rerun.h"
 #include "file_io/output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
@@ -548,6 +549,7 @@ static int run(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
+    if(o.huge_pages == "on") rerun_with_huge_pages(argv, o.mesh);
     Processes processes(o);
     if(!processes.writes())
     {

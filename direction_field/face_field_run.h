@@ -179,7 +179,8 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms) << ",\"solve\":" << number(r.timings.solve_ms)
      << ",\"total\":" << number(r.timings.total_ms) << ",\"read\":" << number(timings.read)
-     << ",\"repair\":" << number(timings.repair) << ",\"write\":" << number(timings.write) << "}}\n";
+     << ",\"repair\":" << number(timings.repair) << ",\"write\":" << number(timings.write) << "}"
+     << ",\"huge_pages\":" << (malloc_uses_huge_pages() ? "true" : "false") << "}\n";
 }
 
 template <typename Mesh>

@@ -5,6 +5,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_REPORTS_H
 
 #include "command_line_options.h"
+#include "huge_pages_rerun.h"
 #include "progress.h"
 #include "file_io/read_and_repair_mesh.h"
 
@@ -107,7 +108,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"solve\":" << number(r.timings.solve_ms) << ",\"total\":" << number(r.timings.total_ms)
      << ",\"read\":" << number(timings.read) << ",\"repair\":" << number(timings.repair)
      << ",\"write\":" << number(timings.write) << "},\"io_ms\":" << number(timings.io()) << ",\"solver\":\"" << o.solver << "\",\"ranks\":" << ranks
-     << "}\n";
+     << ",\"huge_pages\":" << (malloc_uses_huge_pages() ? "true" : "false") << "}\n";
 }
 
 template <typename Mesh>

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Loop subdivision of a triangle mesh (OFF in, OFF out), to make the larger meshes of the benchmark from the
 shared ones (each step: four times the faces). Interior rules of Loop (1987); on the boundary, edge points are
-midpoints and boundary vertices stay (enough for cost measurements).
-  usage: loop_subdivide.py IN.off OUT.off [STEPS]"""
+midpoints and boundary vertices stay (enough for cost measurements). --midpoint splits each triangle in four
+at its edges' midpoints instead: the same piecewise-linear surface, finer (for the spectra of a mesh and of its
+refinement, README.md).
+  usage: loop_subdivide.py IN.off OUT.off [STEPS] [--midpoint]"""
 import sys
 
 import numpy as np
@@ -19,7 +21,7 @@ def read_off(path):
     return V, F[:, 1:]
 
 
-def subdivide(V, F):
+def subdivide(V, F, midpoint=False):
     nv = len(V)
     half = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])       # (3 |F|, 2) directed sides
     opposite = np.concatenate([F[:, 2], F[:, 0], F[:, 1]])                  # the corner facing each side
@@ -29,7 +31,7 @@ def subdivide(V, F):
     border = count == 1
     far = np.zeros((len(edges), 3))
     np.add.at(far, edge_of_side, V[opposite])
-    edge_points = np.where(border[:, None], 0.5 * (V[a] + V[b]), 0.375 * (V[a] + V[b]) + 0.125 * far)
+    edge_points = np.where(border[:, None] | midpoint, 0.5 * (V[a] + V[b]), 0.375 * (V[a] + V[b]) + 0.125 * far)
     # vertex points: (1 - k beta) v + beta sum of neighbours; boundary vertices stay
     valence = np.bincount(np.concatenate([a, b]), minlength=nv).astype(np.float64)
     neighbours = np.zeros_like(V)
@@ -40,7 +42,7 @@ def subdivide(V, F):
     on_border[b[border]] = True
     beta = np.where(valence == 3, 3.0 / 16.0, 3.0 / (8.0 * np.maximum(valence, 1)))
     moved = (1 - valence * beta)[:, None] * V + beta[:, None] * neighbours
-    vertex_points = np.where(on_border[:, None] | (valence == 0)[:, None], V, moved)
+    vertex_points = np.where(on_border[:, None] | (valence == 0)[:, None] | midpoint, V, moved)
     m = nv + edge_of_side.reshape(3, len(F)).T                                 # (|F|, 3): edge point of each side
     x, y, z = F[:, 0], F[:, 1], F[:, 2]
     e01, e12, e20 = m[:, 0], m[:, 1], m[:, 2]
@@ -57,11 +59,13 @@ def write_off(path, V, F):
 
 
 def main():
-    V, F = read_off(sys.argv[1])
-    for _ in range(int(sys.argv[3]) if len(sys.argv) > 3 else 1):
-        V, F = subdivide(V, F)
-    write_off(sys.argv[2], V, F)
-    print("%s: %d vertices, %d faces" % (sys.argv[2], len(V), len(F)))
+    midpoint = "--midpoint" in sys.argv
+    args = [a for a in sys.argv[1:] if a != "--midpoint"]
+    V, F = read_off(args[0])
+    for _ in range(int(args[2]) if len(args) > 2 else 1):
+        V, F = subdivide(V, F, midpoint)
+    write_off(args[1], V, F)
+    print("%s: %d vertices, %d faces" % (args[1], len(V), len(F)))
 
 
 if __name__ == "__main__":

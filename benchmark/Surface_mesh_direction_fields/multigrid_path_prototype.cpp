@@ -2,8 +2,10 @@
 // against the direct path, on one mesh, in one run: the times and iterations of
 // both, the eigenvalues, and the cost of one two-level cycle, one product
 // with A, one with A and M together and one coarse solve (means of 10).
-//   usage: multigrid_path_prototype MESH [--degree N] [--strength THETA] [--no-direct]
+//   usage: multigrid_path_prototype MESH [--degree N] [--strength THETA] [--no-direct] [--spectrum K]
 // --no-direct skips the direct path (for the process's peak memory, /usr/bin/time).
+// --spectrum K prints the lowest K eigenvalues of the fine and the coarse
+// pencils instead (compare_spectra()).
 // Built with -DSMDF_BUILD_EXPERIMENTS=ON.
 #include "multigrid_path_prototype.h"
 
@@ -55,9 +57,35 @@ static void time_pieces(const MP::Complex_sparse_matrix& A, const MP::Complex_sp
             << cycle.coarse_rows() << " rows) " << mean_ms([&] { R = coarse.solve(R); }) << " ms\n";
 }
 
+// The lowest `count` eigenvalues of the fine pencil (A, M) and of the
+// two-level cycle's Galerkin pencil (P^* A P, P^* M P), side by side: the
+// coarse ones are upper bounds of the fine ones, and a coarse level can
+// separate (deflate, or shift between) the lowest modes only where its
+// errors are below their gaps.
+static void compare_spectra(const MP::Complex_sparse_matrix& A, const MP::Complex_sparse_matrix& M,
+                            const MP::Multigrid_options& options, int count)
+{
+  const double epsilon = 1e-8 * MP::eigenvalue_scale(A, M);
+  SMDF::Cholmod_supernodal_solver fine_solver, coarse_solver;
+  Coarse_factor fine(fine_solver), coarse(coarse_solver);
+  const MP::Two_level_cycle<Coarse_factor> cycle(A, M, epsilon, options, coarse);
+  const auto pencil = cycle.coarse_pencil(M);
+  fine.factor(Coarse_factor::matrix_to_factor(A, M, epsilon));
+  double fine_residual = 0., coarse_residual = 0.;
+  const Eigen::VectorXd lambda = MP::lowest_eigenvalues(A, M, fine, count, 1e-7, 300, fine_residual);
+  const Eigen::VectorXd mu =
+    MP::lowest_eigenvalues(pencil.first, pencil.second, coarse, count, 1e-7, 300, coarse_residual);
+  std::cout << "  spectra (relative residuals " << fine_residual << " fine, " << coarse_residual
+            << " coarse, " << cycle.coarse_rows() << " coarse rows):\n";
+  for(int i = 0; i < count; ++i)
+    std::cout << "    lambda_" << i + 1 << " " << lambda[i] << "  coarse " << mu[i] << "  coarse error "
+              << (mu[i] - lambda[i]) / lambda[i] << "  gap to the next "
+              << (i + 1 < count ? (lambda[i + 1] - lambda[i]) / lambda[i] : 0.) << "\n";
+}
+
 int main(int argc, char** argv)
 {
-  int degree = 4;
+  int degree = 4, spectrum = 0;
   bool direct = true;
   MP::Multigrid_options options;
   for(int i = 2; i < argc; ++i)
@@ -65,12 +93,13 @@ int main(int argc, char** argv)
     if(!std::strcmp(argv[i], "--degree") && i + 1 < argc) degree = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--strength") && i + 1 < argc) options.strength = std::atof(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-direct")) direct = false;
+    else if(!std::strcmp(argv[i], "--spectrum") && i + 1 < argc) spectrum = std::atoi(argv[++i]);
     else argc = 0;
   }
   Mesh mesh;
   if(argc < 2 || !CGAL::IO::read_polygon_mesh(argv[1], mesh) || mesh.is_empty())
   {
-    std::cerr << "usage: multigrid_path_prototype MESH [--degree N] [--strength THETA] [--no-direct]\n";
+    std::cerr << "usage: multigrid_path_prototype MESH [--degree N] [--strength THETA] [--no-direct] [--spectrum K]\n";
     return 1;
   }
   SMDF::Globally_optimal_direction_field<Mesh> field(mesh);
@@ -84,6 +113,11 @@ int main(int argc, char** argv)
               << result.components[0].eigenvalue << "\n";
   }
   const auto matrices = field.energy_and_mass_matrices(degree, 0.);
+  if(spectrum > 0)
+  {
+    compare_spectra(matrices.first, matrices.second, options, spectrum);
+    return 0;
+  }
   SMDF::Cholmod_supernodal_solver solver;
   Coarse_factor coarse(solver);
   const Clock::time_point t = Clock::now();

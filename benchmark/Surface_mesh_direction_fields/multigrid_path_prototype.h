@@ -191,11 +191,16 @@ public:
   // A start vector: inverse iteration on the coarse pencil, prolongated.
   Complex_vector coarse_start(unsigned int seed, int iterations) const
   {
+    // y is kept at unit M-norm: M y serves the norm and the next solve.
     Complex_vector y = random_start_vector(coarse_rows(), seed);
+    Complex_dense_matrix My = hermitian_multiply(m_coarse_mass, y);
     for(int k = 0; k < iterations; ++k)
     {
-      y = m_coarse.solve(hermitian_multiply(m_coarse_mass, y)).col(0);
-      y /= std::sqrt((std::max)(std::numeric_limits<double>::min(), y.dot(hermitian_multiply(m_coarse_mass, y).col(0)).real()));
+      y = m_coarse.solve(My).col(0);
+      hermitian_multiply(m_coarse_mass, y, My);
+      const double norm = std::sqrt((std::max)(std::numeric_limits<double>::min(), y.dot(My.col(0)).real()));
+      y /= norm;
+      My /= norm;
     }
     Complex_vector x;
     adjoint_times(m_P_adjoint, y, x);
@@ -204,6 +209,13 @@ public:
 
   // The coarse mass is needed for the start only.
   void forget_coarse_mass() { m_coarse_mass = Complex_sparse_matrix(); }
+
+  // The Galerkin pencil's matrices (P^* A P, P^* M P), for measurements.
+  std::pair<Complex_sparse_matrix, Complex_sparse_matrix> coarse_pencil(const Complex_sparse_matrix& M) const
+  {
+    const Complex_sparse_matrix AP = m_A * m_P, MP = M * m_P;
+    return std::make_pair(Complex_sparse_matrix(m_P_adjoint * AP), Complex_sparse_matrix(m_P_adjoint * MP));
+  }
 
 private:
   // x += w D^-1 (b - A x)
@@ -221,6 +233,45 @@ private:
   mutable Complex_dense_matrix m_b, m_Ax;
   mutable Complex_vector m_coarse_rhs, m_correction;
 };
+
+// The lowest `count` eigenvalues of the pencil (K, N), with `factor` holding
+// K + epsilon N: subspace iteration on count + 3 vectors with Rayleigh-Ritz,
+// until the relative residuals of the lowest `count` fall below `tolerance`
+// (the eigenvalues are then accurate to about its square) or `iterations`
+// steps. For measurements: the fine and coarse levels' spectra compared.
+template <typename Factorization>
+Eigen::VectorXd lowest_eigenvalues(const Complex_sparse_matrix& K, const Complex_sparse_matrix& N,
+                                   const Factorization& factor, int count, double tolerance, int iterations,
+                                   double& residual)
+{
+  const Eigen::Index n = K.rows(), block = count + 3;
+  Complex_dense_matrix X(n, block), KX, NX, GK, GN, Y;
+  for(Eigen::Index j = 0; j < block; ++j) X.col(j) = random_start_vector(n, static_cast<unsigned int>(j + 1));
+  hermitian_multiply(N, X, NX);
+  const double scale = eigenvalue_scale(K, N);
+  Eigen::VectorXd values;
+  for(int step = 0; step < iterations; ++step)
+  {
+    X = factor.solve(NX);
+    hermitian_multiply_pair(K, N, true, X, KX, NX);
+    adjoint_products(X, KX, NX, GK, GN);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Complex_dense_matrix> ritz(0.5 * (GK + GK.adjoint()),
+                                                                         0.5 * (GN + GN.adjoint()));
+    values = ritz.eigenvalues().head(count);
+    const Complex_dense_matrix& C = ritz.eigenvectors();  // N-orthonormal Ritz vectors, and their images
+    combine_columns(X, C, Y);
+    X.swap(Y);
+    combine_columns(KX, C, Y);
+    KX.swap(Y);
+    combine_columns(NX, C, Y);
+    NX.swap(Y);
+    residual = 0.;
+    for(Eigen::Index j = 0; j < count; ++j)
+      residual = (std::max)(residual, (KX.col(j) - values[j] * NX.col(j)).norm() / (scale * NX.col(j).norm()));
+    if(residual <= tolerance) break;
+  }
+  return values;
+}
 
 // One LOBPCG step's space: columns x, w, p of S (the first `columns` of
 // them: p is absent on the first step) with their images under A and M,

@@ -56,7 +56,7 @@ check "JSON keys and types" python_checks "$out/default.json" <<'EOF'
 import json, sys
 d = json.load(open(sys.argv[1]))
 keys = ["vertices", "faces", "components", "euler_characteristic", "degree", "s", "eigenvalues", "iterations",
-        "residual", "singular_faces", "index_sum", "timings_ms"]
+        "residual", "singular_faces", "index_sum", "timings_ms", "huge_pages"]
 assert all(k in d for k in keys), [k for k in keys if k not in d]
 assert all(k in d["timings_ms"] for k in ["setup", "factorization", "solve", "total"])
 assert isinstance(d["eigenvalues"], list) and len(d["eigenvalues"]) == d["components"]
@@ -478,6 +478,7 @@ bad "t outside (0, 1)" "$out/octahedron.off" --align curvature --alignment-weigh
 bad "lambda above lambda_1" "$out/octahedron.off" --guidance "$out/guidance6.txt" --lambda 1e9
 bad "guidance of the wrong size" "$out/octahedron.off" --guidance "$out/sing4.txt"
 bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.txt"
+bad "huge pages neither on nor off" "$out/octahedron.off" --huge-pages maybe
 bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
 bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
 bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
@@ -547,6 +548,40 @@ assert one >= 0.5 * four
 EOF2
 
 check "--version" test "$("$bin" --version | cut -d' ' -f1)" = direction_field
+
+# 10. --huge-pages: a mesh file of 4 MB or more (a wavy 400 x 400 grid, 17
+# digits per coordinate) runs again with malloc's huge pages where the kernel
+# gives them, a small one does not, and the outputs are the same bit for bit.
+python3 - "$out/grid.off" <<'EOF2'
+import math, sys
+k = 400
+with open(sys.argv[1], "w") as f:
+    f.write("OFF\n%d %d 0\n" % (k * k, 2 * (k - 1) ** 2))
+    for j in range(k):
+        for i in range(k):
+            x, y = i / (k - 1), j / (k - 1)
+            f.write("%.17g %.17g %.17g\n" % (x, y, 0.1 * math.sin(3 * x) * math.cos(2 * y + x)))
+    for j in range(k - 1):
+        for i in range(k - 1):
+            a = j * k + i
+            f.write("3 %d %d %d\n3 %d %d %d\n" % (a, a + 1, a + k + 1, a, a + k + 1, a + k))
+EOF2
+huge_expected=true
+grep -q '\[never\]' /sys/kernel/mm/transparent_hugepage/enabled 2> /dev/null && huge_expected=false
+test -r /sys/kernel/mm/transparent_hugepage/enabled || huge_expected=false
+huge_of() { python3 -c 'import json, sys; print(str(json.load(open(sys.argv[1]))["huge_pages"]).lower())' "$1"; }
+env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --directions "$out/grid_on.txt" > "$out/grid_on.json"
+check "grid, huge pages: exit 0" test $? -eq 0
+env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --huge-pages off --directions "$out/grid_off.txt" > "$out/grid_off.json"
+check "grid, --huge-pages off: exit 0" test $? -eq 0
+check "grid file of 4 MB or more" test "$(stat -c %s "$out/grid.off")" -ge 4194304
+check "grid: huge_pages is $huge_expected" test "$(huge_of "$out/grid_on.json")" = "$huge_expected"
+check "grid, --huge-pages off: huge_pages is false" test "$(huge_of "$out/grid_off.json")" = false
+check "grid: the same directions with and without huge pages" cmp -s "$out/grid_on.txt" "$out/grid_off.txt"
+env -u GLIBC_TUNABLES "$bin" "$out/octahedron.off" --json > "$out/small.json"
+check "a small file: no rerun (huge_pages false)" test "$(huge_of "$out/small.json")" = false
+GLIBC_TUNABLES=glibc.malloc.arena_max=4 "$bin" "$out/grid.off" --json > "$out/grid_user.json"
+check "GLIBC_TUNABLES of the user's kept (huge_pages false)" test "$(huge_of "$out/grid_user.json")" = false
 
 echo "command line: $passed passed, $failed failed"
 test $failed -eq 0 || exit 1
