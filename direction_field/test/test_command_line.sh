@@ -569,6 +569,7 @@ EOF2
 huge_expected=true
 grep -q '\[never\]' /sys/kernel/mm/transparent_hugepage/enabled 2> /dev/null && huge_expected=false
 test -r /sys/kernel/mm/transparent_hugepage/enabled || huge_expected=false
+[ "$(ulimit -v)" = unlimited ] || huge_expected=false  # no rerun under an address-space limit
 huge_of() { python3 -c 'import json, sys; print(str(json.load(open(sys.argv[1]))["huge_pages"]).lower())' "$1"; }
 env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --directions "$out/grid_on.txt" > "$out/grid_on.json"
 check "grid, huge pages: exit 0" test $? -eq 0
