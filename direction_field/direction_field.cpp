@@ -466,14 +466,21 @@ void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
 
-// Under mpirun every process parses the options before MPI starts, so a bad
-// option fails on all of them: only the first says it (its rank comes from
-// the launcher's environment: Open MPI's, or MPICH's and Slurm's).
-bool is_first_launched_process()
+// The rank a launcher (Open MPI's, MPICH's or Slurm's) gave this process in
+// its environment, or nullptr outside a launcher.
+const char* launcher_rank()
 {
   for(const char* variable : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "SLURM_PROCID"})
-    if(const char* rank = std::getenv(variable)) return std::string(rank) == "0";
-  return true;
+    if(const char* rank = std::getenv(variable)) return rank;
+  return nullptr;
+}
+
+// Under mpirun every process parses the options before MPI starts, so a bad
+// option fails on all of them: only the first says it.
+bool is_first_launched_process()
+{
+  const char* rank = launcher_rank();
+  return rank == nullptr || std::string(rank) == "0";
 }
 
 void report_out_of_memory(Progress& progress)
@@ -549,7 +556,7 @@ static int run(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
-    if(o.huge_pages == "on") rerun_with_huge_pages(argv, o.mesh);
+    if(o.huge_pages == "on" && launcher_rank() == nullptr) rerun_with_huge_pages(argv, o.mesh);
     Processes processes(o);
     if(!processes.writes())
     {

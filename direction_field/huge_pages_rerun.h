@@ -40,16 +40,15 @@ constexpr long long huge_pages_smallest_file = 4LL << 20;
 // Runs the program again with malloc's huge pages, except where the user set
 // GLIBC_TUNABLES (the rerun itself has it), where the mesh file is small
 // (or unreadable: the read reports it), where the kernel gives no
-// transparent huge pages, under an MPI launcher (which owns the processes'
-// environment), or under an address-space limit (where the program's
-// behaviour is tested as it is). Called once the options are parsed, before
-// anything is written. Goes on as it is if the rerun fails.
+// transparent huge pages, or under an address-space limit (where the
+// program's behaviour is tested as it is). Called once the options are
+// parsed, before anything is written, and not under an MPI launcher (which
+// owns the processes' environment; the caller knows its variables). Goes on
+// as it is if the rerun fails.
 inline void rerun_with_huge_pages(char** argv, const std::string& mesh_file)
 {
 #if defined(__linux__) && defined(__GLIBC__)
   if(std::getenv("GLIBC_TUNABLES") != nullptr) return;
-  for(const char* launcher : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_PROCID"})
-    if(std::getenv(launcher) != nullptr) return;
   struct stat file{};
   if(stat(mesh_file.c_str(), &file) != 0 || static_cast<long long>(file.st_size) < huge_pages_smallest_file) return;
   rlimit limit{};
