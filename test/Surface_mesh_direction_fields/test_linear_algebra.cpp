@@ -29,6 +29,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -166,6 +167,68 @@ static void check_analysis_from_pattern(Test_report& report)
                "a factorization whose matrix does not have the analyzed pattern analyzes it again");
 }
 
+// The compact form of a pencil (compact_pencil.h): the same products and the
+// same matrix to factor as the assembled A and M, bit for bit; refused where
+// the pattern is not symmetric or misses a diagonal entry.
+static void check_compact_pencil(Test_report& report)
+{
+  const Eigen::Index n = 500;
+  const Cycle_pencil p = magnetic_cycle(n, 0.9);
+  const SI::Compact_hermitian_pencil compact(p.A, p.M);
+  report.check(compact.valid() && compact.rows() == n, "the compact form applies to an assembled pencil");
+  const SI::Complex_dense_matrix X = SI::random_block(n, 3, 11);
+  SI::Complex_dense_matrix AX, MX, compact_AX, compact_MX;
+  SI::hermitian_multiply_pair(p.A, p.M, true, X, AX, MX);
+  compact.multiply_pair(X, compact_AX, compact_MX);
+  report.check(AX == compact_AX && MX == compact_MX, "compact form: A X and M X bit for bit");
+  const SI::Complex_sparse_matrix lower = SI::shifted_lower_triangle(p.A, p.M, -0.25);
+  const SI::Complex_sparse_matrix compact_lower = compact.shifted_lower_triangle(-0.25);
+  const Eigen::Index entries = lower.nonZeros();
+  report.check(entries == compact_lower.nonZeros() &&
+                 std::equal(lower.outerIndexPtr(), lower.outerIndexPtr() + n + 1, compact_lower.outerIndexPtr()) &&
+                 std::equal(lower.innerIndexPtr(), lower.innerIndexPtr() + entries, compact_lower.innerIndexPtr()) &&
+                 std::equal(lower.valuePtr(), lower.valuePtr() + entries, compact_lower.valuePtr()),
+               "compact form: the lower triangle of A + shift M bit for bit");
+  report.check(compact.diagonal_of_mass() == p.M.diagonal().real() &&
+                 compact.diagonal_of_energy() == p.A.diagonal().real(),
+               "compact form: the diagonals");
+
+  SI::Complex_sparse_matrix one_sided(3, 3), no_diagonal(2, 2);
+  one_sided.insert(0, 0) = 1.;
+  one_sided.insert(1, 1) = 1.;
+  one_sided.insert(2, 2) = 1.;
+  one_sided.insert(2, 0) = 0.5;  // (0, 2) missing
+  one_sided.makeCompressed();
+  no_diagonal.insert(1, 0) = 1.;
+  no_diagonal.insert(0, 1) = 1.;
+  no_diagonal.makeCompressed();
+  report.check(!SI::Compact_hermitian_pencil(one_sided, one_sided).valid(),
+               "compact form refused: a pattern that is not symmetric");
+  report.check(!SI::Compact_hermitian_pencil(no_diagonal, no_diagonal).valid(),
+               "compact form refused: a missing diagonal entry");
+}
+
+// The eigen-solve of a single use frees A and M after the coarse estimate
+// and the ordering and goes on with their compact form: the same result,
+// bit for bit.
+static void check_eigen_solve_freeing_matrices(Test_report& report)
+{
+  const Eigen::Index n = 12000;  // above the coarse threshold: the analysis runs beside the coarse estimate
+  const Cycle_pencil p = magnetic_cycle(n, 1.1);
+  SI::Eigen_solve_options options;
+  options.same_pattern = false;
+  Solver kept_solver, freeing_solver;
+  SI::Factored_matrix<Solver> kept(kept_solver), freeing(freeing_solver);
+  const SI::Eigen_solve_result expected = SI::smallest_eigenpair(p.A, p.M, kept, options);
+  SI::Complex_sparse_matrix A = p.A, M = p.M;
+  const SI::Eigen_solve_result r = SI::smallest_eigenpair_freeing_matrices(A, M, freeing, options);
+  report.check(r.vector == expected.vector && r.eigenvalue == expected.eigenvalue &&
+                 r.iterations == expected.iterations && r.residual == expected.residual,
+               "the eigen-solve on the compact form gives the same eigenpair, bit for bit");
+  report.check(A.nonZeros() == 0 && M.nonZeros() == 0 && A.rows() == 0,
+               "the eigen-solve of a single use frees A and M");
+}
+
 int main()
 {
   Test_report report("test_linear_algebra");
@@ -174,5 +237,7 @@ int main()
   check_smallest_eigenpair(report, 12000, 1.1);  // above the coarse threshold: the coarse start is used
   check_shifted_solve(report);
   check_analysis_from_pattern(report);
+  check_compact_pencil(report);
+  check_eigen_solve_freeing_matrices(report);
   return report.finish();
 }

@@ -76,7 +76,7 @@ public:
       (aligned && (targets.alignment.weight_given || !m_systems.certifies_definiteness(c)));
     report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
     Complex_vector u;
-    if(needs_eigenvalue) u = smallest_eigenvector(c, report);
+    if(needs_eigenvalue) u = smallest_eigenvector(c, report, !smoothest);
     if(!smoothest) u = aligned_field(c, Mq, aligned, constraints, targets.alignment, report);
     return u;
   }
@@ -99,8 +99,11 @@ private:
     return Mq;
   }
 
-  // The smallest eigenpair of component c's pencil (A, M) (manual, "The Smoothest Field").
-  Complex_vector smallest_eigenvector(std::size_t c, Component_report& report)
+  // The smallest eigenpair of component c's pencil (A, M) (manual, "The
+  // Smoothest Field"). In a call that keeps nothing, the eigen-solve frees A
+  // and M once it no longer needs them as assembled, unless
+  // `matrices_needed_after` (the aligned field that follows reads them).
+  Complex_vector smallest_eigenvector(std::size_t c, Component_report& report, bool matrices_needed_after = true)
   {
     Eigen_solve_result eig;
     if(m_systems.distributes(c))
@@ -116,8 +119,16 @@ private:
       options.same_pattern = kept.analyzed && !m_systems.user_solver();
       kept.analyzed = true;
       kept.forget_aligned();
-      const Energy_and_mass& em = m_systems.matrices(c);
-      eig = smallest_eigenpair(em.energy, em.mass, kept.factored, options);
+      if(!matrices_needed_after && !m_systems.keeps_factorizations() && !m_systems.user_solver())
+      {
+        Energy_and_mass& em = m_systems.matrices_of_single_use(c);
+        eig = smallest_eigenpair_freeing_matrices(em.energy, em.mass, kept.factored, options);
+      }
+      else
+      {
+        const Energy_and_mass& em = m_systems.matrices(c);
+        eig = smallest_eigenpair(em.energy, em.mass, kept.factored, options);
+      }
       m_systems.release_factorization(c);
       m_timings.factorization_ms += eig.factorization_ms;
     }

@@ -182,6 +182,15 @@ public:
     return em;
   }
 
+  // A and M of component c for a use that frees them (the eigen-solve of a
+  // call that keeps nothing); matrices() assembles them again if asked for.
+  // Their scale is kept (see scale()).
+  Energy_and_mass& matrices_of_single_use(std::size_t c)
+  {
+    scale(c);
+    return m_matrices[c];
+  }
+
   // trace(A) / trace(M) of component c (eigenvalue_scale()), kept while A
   // and M are those of the current n and s, also when freed.
   double scale(std::size_t c)

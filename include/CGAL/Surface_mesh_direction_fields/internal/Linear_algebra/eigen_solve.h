@@ -32,8 +32,10 @@
 #include <functional>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 // The smallest generalized eigenpair of A u = lambda M u (user manual, section "The Smoothest Field"),
@@ -267,18 +269,19 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
 // single-precision solve with it has no correct digit: it is always factored
 // in double precision.
 template <typename SparseSolver>
-void factor_below_smallest_eigenvalue(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                      double eigenvalue_scale, double bound, const Eigen_solve_options& options,
+void factor_below_smallest_eigenvalue(const Hermitian_pencil& pencil, double bound, const Eigen_solve_options& options,
                                       bool single_allowed, Factored_matrix<SparseSolver>& factored,
                                       Eigen_solve_result& result)
 {
-  result.shift = options.relative_shift * eigenvalue_scale;
+  typedef Factored_matrix<SparseSolver> Factored;
+  result.shift = options.relative_shift * pencil.scale;
   bool factored_shifted = false;
-  if(Factored_matrix<SparseSolver>::detects_indefinite && options.shift_fraction * bound > result.shift)
+  if(Factored::detects_indefinite && options.shift_fraction * bound > result.shift)
   {
     const double trial = -options.shift_fraction * bound;
     factored.allow_single_precision(single_allowed);
-    factored_shifted = factored.factor_shifted_if_positive_definite(A, M, trial, options.same_pattern);
+    factored_shifted =
+      factored.factor_if_positive_definite(pencil.matrix_to_factor<Factored>(trial), options.same_pattern);
     factored.allow_single_precision(false);
     if(factored_shifted)
       result.shift = trial;
@@ -286,30 +289,28 @@ void factor_below_smallest_eigenvalue(const Complex_sparse_matrix& A, const Comp
       result.shift_rejected = true;
   }
   if(!factored_shifted)
-    factored.factor_shifted(A, M, result.shift, options.same_pattern);
+    factored.factor(pencil.matrix_to_factor<Factored>(result.shift), options.same_pattern);
 }
 
-// The Ritz vectors X of a step with A X and M X: their residuals
-// A x_j - theta_j M x_j (theta_j: the Rayleigh quotient of x_j); the first
-// one's eigenvalue and relative residual go to `result`.
-inline Complex_dense_matrix ritz_residuals(const Hermitian_pencil& pencil, const Complex_dense_matrix& X,
-                                           Complex_dense_matrix& AX, Complex_dense_matrix& MX,
-                                           Eigen_solve_result& result)
+// The Ritz vectors X of a step: their residuals R, r_j = A x_j - theta_j M x_j
+// (theta_j: the Rayleigh quotient of x_j), and M X; the first one's
+// eigenvalue and relative residual go to `result`. R holds A X first and is
+// turned into the residuals in place (one vector of the mesh's size less).
+inline void ritz_residuals(const Hermitian_pencil& pencil, const Complex_dense_matrix& X, Complex_dense_matrix& R,
+                           Complex_dense_matrix& MX, Eigen_solve_result& result)
 {
-  hermitian_multiply_pair(pencil.A, pencil.M, pencil.same_pattern, X, AX, MX);
-  Complex_dense_matrix R(X.rows(), X.cols());
+  pencil.multiply_pair(X, R, MX);
   for(Eigen::Index j = 0; j < X.cols(); ++j)
   {
     const double norm2 = (std::max)(0., X.col(j).dot(MX.col(j)).real());
-    const double theta = norm2 > 0. ? X.col(j).dot(AX.col(j)).real() / norm2 : 0.;
-    R.col(j) = AX.col(j) - theta * MX.col(j);
+    const double theta = norm2 > 0. ? X.col(j).dot(R.col(j)).real() / norm2 : 0.;
+    R.col(j) -= theta * MX.col(j);
     if(j == 0)
     {
       result.eigenvalue = theta;
       result.residual = R.col(0).norm() / (pencil.scale * MX.col(0).norm());
     }
   }
-  return R;
 }
 
 // A shift below the eigenvalue nearest the Ritz value theta of x, from the residual r = A x - theta M x: some
@@ -376,37 +377,42 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
                                 const Refactor& refactor, Eigen_solve_result& result, Complex_vector& u,
                                 Complex_vector& Mu)
 {
-  const Eigen::Index n = pencil.A.rows();
+  const Eigen::Index n = pencil.rows();
   const Eigen::Index block = start.cols();
   const Eigen::Index basis_size =
     (std::max)((std::max)(Eigen::Index(3), options.restart_size + 2) * block, (std::min)(options.basis_size, n));
   Ritz_basis basis(pencil, basis_size + 2 * block);
-  basis.add(start);
+  // R and MX: the residuals and M X of the block `next`, while `current`;
+  // in between, the basis's workspace for the products of what it adds
+  Complex_dense_matrix R, MX;
+  bool current = false;
+  basis.add(start, R, MX);
   unsigned int next_seed = options.random_seed + static_cast<unsigned int>(block);
   Complex_dense_matrix next = basis.vectors();  // the block the next solve is applied to
   Complex_dense_matrix previous(n, 0);          // the best Ritz vectors of the previous step
   Complex_dense_matrix kept(n, 0);              // the best Ritz vectors a restart keeps
-  Complex_dense_matrix AX, MX;
-  Complex_dense_matrix R = ritz_residuals(pencil, next, AX, MX, result);
+  ritz_residuals(pencil, next, R, MX, result);
+  current = true;
   u = next.col(0);
   std::vector<double> best_residual(1, result.residual);  // after each solve
   while(result.iterations < options.max_iterations)
   {
     if(options.keep_going && !options.keep_going())
       throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
-    const Complex_dense_matrix W = factored.solve(R);
+    Complex_dense_matrix W = factored.solve(R);
     ++result.iterations;
+    current = false;
     if(basis.size() + W.cols() > basis_size)
     {
       // Restart with the best Ritz vectors and the previous best ones.
       basis.clear();
-      basis.add(kept);
-      basis.add(previous);
+      basis.add(kept, R, MX);
+      basis.add(previous, R, MX);
     }
-    if(basis.add(W) == 0)
+    if(basis.add(std::move(W), R, MX) == 0)
     {
       // An invariant subspace: enrich with fresh random directions.
-      if(basis.size() >= n || basis.add(random_block(n, block, next_seed)) == 0)
+      if(basis.size() >= n || basis.add(random_block(n, block, next_seed), R, MX) == 0)
         break;
       next_seed += static_cast<unsigned int>(block);
     }
@@ -427,7 +433,8 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
     else
       combine_columns(basis.vectors(), ritz.eigenvectors().leftCols(best), next);
     u = next.col(0);
-    R = ritz_residuals(pencil, next, AX, MX, result);
+    ritz_residuals(pencil, next, R, MX, result);
+    current = true;
     if(result.residual <= options.residual_tolerance)
     {
       result.converged = true;
@@ -435,6 +442,9 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
     }
     reshift_if_due(pencil, R.col(0), u, MX.col(0), options, refactor, result, best_residual);
   }
+  // a step that ended early left the basis's products in MX: those of u
+  // again (its eigenvalue and residual are those already in `result`)
+  if(!current) ritz_residuals(pencil, next, R, MX, result);
   Mu = MX.col(0);  // MX = M u (u is next's first column)
 }
 
@@ -455,14 +465,15 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
 // factor too inexact for a shift close to lambda_1 thus costs stalls, not
 // the convergence).
 template <typename SparseSolver>
-bool refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, double theta,
-                          double target, const Eigen_solve_options& options, Factored_matrix<SparseSolver>& factored,
+bool refactor_after_stall(const Hermitian_pencil& pencil, double theta, double target,
+                          const Eigen_solve_options& options, Factored_matrix<SparseSolver>& factored,
                           Eigen_solve_result& result)
 {
+  typedef Factored_matrix<SparseSolver> Factored;
   const double sigma = -result.shift;
   const bool single = factored.holds_single_precision();
   const bool can_move =
-    result.reshifts < options.max_reshifts && Factored_matrix<SparseSolver>::detects_indefinite && theta > sigma;
+    result.reshifts < options.max_reshifts && Factored::detects_indefinite && theta > sigma;
   if(!std::isnan(target) && !(can_move && target > sigma)) return false;
   bool tried = false, moved = false;
   if(can_move)
@@ -471,16 +482,42 @@ bool refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_m
     tried = true;
     const double closer = std::isnan(target) ? theta - options.reshift_fraction * (theta - sigma) : target;
     factored.allow_single_precision(options.single_precision);
-    moved = factored.factor_shifted_if_positive_definite(A, M, -closer, true);
+    moved = factored.factor_if_positive_definite(pencil.matrix_to_factor<Factored>(-closer), true);
     factored.allow_single_precision(false);
     if(moved) result.shift = -closer;
   }
   if(!moved && (tried || single))
   {
-    factored.factor_shifted(A, M, -sigma, true);  // the shift it had, in double
+    factored.factor(pencil.matrix_to_factor<Factored>(-sigma), true);  // the shift it had, in double
     result.refactored_in_double = result.refactored_in_double || single;
   }
   return true;
+}
+
+// The coarse estimate of smallest_eigenpair(), with the symbolic analysis of
+// A - sigma M beside it: the analysis does not depend on the shift sigma
+// that the estimate gives, and reads A's pattern (which is M's), unless an
+// earlier factorization's is reused (then `same_pattern` stays as it was).
+template <typename SparseSolver>
+Coarse_estimate estimate_and_analyze(const Hermitian_pencil& pencil, const Complex_sparse_matrix& A,
+                                     const Complex_sparse_matrix& M, Factored_matrix<SparseSolver>& factored,
+                                     const Eigen_solve_options& options, bool& same_pattern)
+{
+  const Eigen::Index n = A.rows();
+  Coarse_estimate estimate;
+  auto estimate_coarsely = [&] {
+    if(n >= options.coarse_threshold)
+      estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
+  };
+  if(Factored_matrix<SparseSolver>::analyzes_patterns && pencil.same_pattern && !options.same_pattern &&
+     n >= options.coarse_threshold)
+  {
+    parallel_invoke(estimate_coarsely, [&] { factored.analyze_pattern(A); });
+    same_pattern = true;
+  }
+  else
+    estimate_coarsely();
+  return estimate;
 }
 
 // The smallest eigenpair of the pencil (A, M) (user manual, section "The
@@ -508,49 +545,54 @@ bool refactor_after_stall(const Complex_sparse_matrix& A, const Complex_sparse_m
 // best Ritz vectors (the next ones matter where eigenvalues cluster) and the
 // previous best Ritz vectors, whose span holds the step direction (as in
 // LOBPCG). Only V is stored (not A V, M V), so the memory is about
-// `basis_size` + 2 `restart_size` vectors. The iteration stops when the
+// `basis_size` + `restart_size` + 6 blocks of `block_size` vectors (with the
+// kept, previous and next Ritz vectors, the residuals, their solve and M
+// times the Ritz vectors). The iteration stops when the
 // relative residual of the best Ritz pair reaches the tolerance;
 // `iterations` counts the solves (of a block each).
+//
+// smallest_eigenpair_of() is smallest_eigenpair() with, in `owned`, A and M
+// that nobody reads after it (or null): see smallest_eigenpair_freeing_matrices().
 template <typename SparseSolver>
-Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
-                                      Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options)
+Eigen_solve_result smallest_eigenpair_of(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                         Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options,
+                                         std::pair<Complex_sparse_matrix*, Complex_sparse_matrix*> owned)
 {
   typedef std::chrono::steady_clock Clock;
   const Eigen::Index n = A.rows();
   Eigen_solve_result result;
-  const Hermitian_pencil pencil(A, M);
+  Hermitian_pencil pencil(A, M);
   Eigen_solve_options options_after_analysis = options;
 
   const auto t_start = Clock::now();
-  Coarse_estimate estimate;
-  auto estimate_coarsely = [&] {
-    if(n >= options.coarse_threshold)
-      estimate = coarse_estimate<SparseSolver>(A, M, pencil.same_pattern, options);
-  };
-  // The symbolic analysis of A - sigma M does not depend on the shift sigma
-  // that the coarse estimate gives: it runs beside it, on A's pattern (which
-  // is M's), unless an earlier factorization's is reused.
-  if(Factored_matrix<SparseSolver>::analyzes_patterns && pencil.same_pattern && !options.same_pattern &&
-     n >= options.coarse_threshold)
-  {
-    parallel_invoke(estimate_coarsely, [&] { factored.analyze_pattern(A); });
-    options_after_analysis.same_pattern = true;
-  }
-  else
-    estimate_coarsely();
+  Coarse_estimate estimate =
+    estimate_and_analyze(pencil, A, M, factored, options, options_after_analysis.same_pattern);
   result.coarse_upper_bound = estimate.bound;
   result.coarse_iterations = estimate.iterations;
+  std::optional<Compact_hermitian_pencil> compact;
+  if(owned.first != nullptr && Factored_matrix<SparseSolver>::factors_lower_triangle && pencil.same_pattern)
+  {
+    compact.emplace(A, M);
+    if(compact->valid())
+    {
+      pencil.use_compact_form(*compact);
+      Complex_sparse_matrix().swap(*owned.first);  // (an assignment would keep the arrays)
+      Complex_sparse_matrix().swap(*owned.second);
+    }
+    else
+      compact.reset();
+  }
 
   const auto t0 = Clock::now();
-  factor_below_smallest_eigenvalue(A, M, pencil.scale, estimate.bound, options_after_analysis,
-                                   options.single_precision, factored, result);
+  factor_below_smallest_eigenvalue(pencil, estimate.bound, options_after_analysis, options.single_precision,
+                                   factored, result);
   result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
   auto refactor = [&](double theta, double target) {
     const auto start = Clock::now();
     options_after_analysis.same_pattern = true;
-    const bool acted = refactor_after_stall(A, M, theta, target, options, factored, result);
+    const bool acted = refactor_after_stall(pencil, theta, target, options, factored, result);
     refactorization_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return acted;
   };
@@ -569,6 +611,27 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
   result.solve_ms =
     std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - t_start)).count() - refactorization_ms;
   return result;
+}
+
+template <typename SparseSolver>
+Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M,
+                                      Factored_matrix<SparseSolver>& factored, const Eigen_solve_options& options)
+{
+  return smallest_eigenpair_of(A, M, factored, options, {nullptr, nullptr});
+}
+
+// smallest_eigenpair() for A and M of a single use (the free function's):
+// once the coarse estimate and the ordering have read them, they are freed
+// (left empty) and the factorizations and products read their compact form
+// instead (compact_pencil.h), the same values in about 60% of the memory,
+// where the solver factors only the lower triangle and A and M have one
+// pattern. The result is the same.
+template <typename SparseSolver>
+Eigen_solve_result smallest_eigenpair_freeing_matrices(Complex_sparse_matrix& A, Complex_sparse_matrix& M,
+                                                       Factored_matrix<SparseSolver>& factored,
+                                                       const Eigen_solve_options& options)
+{
+  return smallest_eigenpair_of(A, M, factored, options, {&A, &M});
 }
 
 } // namespace internal

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/compact_pencil.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
@@ -26,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <utility>
 
 // The space of the eigen-solve's Rayleigh-Ritz step (eigen_solve.h): the
 // pencil (A, M), a basis orthonormal for the lumped mass with its projected
@@ -99,16 +101,50 @@ Complex_dense_matrix d_orthonormalize(const Eigen::VectorXd& d, const Basis& V, 
   return W.leftCols(kept);
 }
 
-// The pencil (A, M) with what the iteration derives from it once.
-struct Hermitian_pencil
+// The pencil (A, M) with what the iteration derives from it once: the
+// assembled matrices, or their compact form (compact_pencil.h), which the
+// eigen-solve of a single field moves to once nothing else reads the
+// assembled ones (see use_compact_form()).
+class Hermitian_pencil
 {
+  const Complex_sparse_matrix* m_A;
+  const Complex_sparse_matrix* m_M;
+  const Compact_hermitian_pencil* m_compact = nullptr;
+  Eigen::Index m_rows;
+
+public:
   Hermitian_pencil(const Complex_sparse_matrix& A_, const Complex_sparse_matrix& M_)
-    : A(A_), M(M_), lumped_mass(M_.diagonal().real()),
+    : m_A(&A_), m_M(&M_), m_rows(A_.rows()), lumped_mass(M_.diagonal().real()),
       // trace(A) / trace(M) (as eigenvalue_scale(), with the lumped mass at hand)
       scale(A_.diagonal().real().sum() / lumped_mass.sum()), same_pattern(have_same_pattern(A_, M_))
   {}
-  const Complex_sparse_matrix& A;
-  const Complex_sparse_matrix& M;
+
+  // From now on the products and the matrices to factor come from `compact`
+  // (the same pencil, which must outlive this object); the assembled
+  // matrices may then be freed.
+  void use_compact_form(const Compact_hermitian_pencil& compact) { m_compact = &compact; }
+  bool compact() const { return m_compact != nullptr; }
+
+  Eigen::Index rows() const { return m_rows; }
+
+  // A X and M X
+  void multiply_pair(const Complex_dense_matrix& X, Complex_dense_matrix& AX, Complex_dense_matrix& MX) const
+  {
+    if(m_compact)
+      m_compact->multiply_pair(X, AX, MX);
+    else
+      hermitian_multiply_pair(*m_A, *m_M, same_pattern, X, AX, MX);
+  }
+
+  // What `Factored` factors for A + shift M (only the lower triangle in the compact form, which is used only with
+  // a solver that reads no more).
+  template <typename Factored>
+  Complex_sparse_matrix matrix_to_factor(double shift) const
+  {
+    if(m_compact) return m_compact->shifted_lower_triangle(shift);
+    return Factored::matrix_to_factor(*m_A, *m_M, shift);
+  }
+
   const Eigen::VectorXd lumped_mass;  // diag(M)
   const double scale;
   const bool same_pattern;  // A and M share one compressed pattern
@@ -124,10 +160,9 @@ class Ritz_basis
   Complex_dense_matrix m_V;
   Eigen::Index m_size = 0;
   Complex_dense_matrix m_H, m_G;  // V^* A V and V^* M V
-  Complex_dense_matrix m_AQ, m_MQ;
 
 public:
-  Ritz_basis(const Hermitian_pencil& pencil, Eigen::Index capacity) : m_pencil(pencil), m_V(pencil.A.rows(), capacity)
+  Ritz_basis(const Hermitian_pencil& pencil, Eigen::Index capacity) : m_pencil(pencil), m_V(pencil.rows(), capacity)
   {
     advise_huge_pages(m_V.data(), static_cast<std::size_t>(m_V.size()) * sizeof(Complex));
   }
@@ -145,14 +180,19 @@ public:
   }
 
   // Adds the part of the columns of W outside the span, orthonormalized, and
-  // extends H and G; returns the number of columns added.
-  Eigen::Index add(const Complex_dense_matrix& W)
+  // extends H and G; returns the number of columns added. W is taken over
+  // (orthonormalized in its own storage), and A Q, M Q of the added columns
+  // Q go to the caller's `AQ` and `MQ`, whose contents are lost: the
+  // iteration lends its own products, which it computes again after each
+  // addition, so that no vector of the size of the mesh is held twice (on
+  // large meshes the iteration's vectors are a tenth of the peak memory).
+  Eigen::Index add(Complex_dense_matrix W, Complex_dense_matrix& AQ, Complex_dense_matrix& MQ)
   {
-    const Eigen::Index n = m_pencil.A.rows(), k = m_size;
-    const Complex_dense_matrix Q = d_orthonormalize(m_pencil.lumped_mass, m_V.leftCols(k), W);
+    const Eigen::Index n = m_pencil.rows(), k = m_size;
+    const Complex_dense_matrix Q = d_orthonormalize(m_pencil.lumped_mass, m_V.leftCols(k), std::move(W));
     const Eigen::Index q = Q.cols();
     if(q == 0) return q;
-    hermitian_multiply_pair(m_pencil.A, m_pencil.M, m_pencil.same_pattern, Q, m_AQ, m_MQ);
+    m_pencil.multiply_pair(Q, AQ, MQ);
     // copied in parallel: most of this copy's time is the first write to the
     // basis's fresh pages
     parallel_for_each_chunk(static_cast<std::size_t>(n), [&](std::size_t begin, std::size_t end) {
@@ -160,7 +200,7 @@ public:
       m_V.block(first, k, rows, q) = Q.middleRows(first, rows);
     });
     Complex_dense_matrix VAQ, VMQ;  // [V Q]^* A Q and [V Q]^* M Q, in one pass over the basis
-    adjoint_products(m_V.leftCols(k + q), m_AQ, m_MQ, VAQ, VMQ);
+    adjoint_products(m_V.leftCols(k + q), AQ, MQ, VAQ, VMQ);
     m_H.conservativeResize(k + q, k + q);
     m_G.conservativeResize(k + q, k + q);
     m_H.topRightCorner(k, q) = VAQ.topRows(k);
