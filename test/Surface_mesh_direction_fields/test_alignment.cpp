@@ -530,11 +530,43 @@ static void check_interrupted_call(Test_report& report)
   report.check(same, "class: after an interrupted call, the field of a fresh class, bit for bit");
 }
 
+// A flat square (no curvature: the guidance vanishes, lambda_1 = 0): the
+// curvature-aligned field of the free function is the smoothest one (its
+// aligned system, factored before the guidance, is not used; the
+// eigen-solve then assembles A and M, which that factorization had not).
+static void check_flat_square(Test_report& report)
+{
+  Mesh mesh;
+  const int n = 16;
+  std::vector<Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) v.push_back(mesh.add_vertex(Point_3(i, 0.7 * j, 0.)));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const Vertex_index a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1];
+      const Vertex_index c = v[(j + 1) * (n + 1) + i + 1], d = v[(j + 1) * (n + 1) + i];
+      mesh.add_face(a, b, c);
+      mesh.add_face(a, c, d);
+    }
+  auto aligned = direction_map(mesh, "v:aligned");
+  auto smoothest = direction_map(mesh, "v:smoothest");
+  const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
+    mesh, aligned, params::degree(2).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM));
+  SMDF::compute_globally_optimal_directions(mesh, smoothest, params::degree(2));
+  double worst = 0.;
+  for(Vertex_index u : mesh.vertices()) worst = (std::max)(worst, angle_mod(aligned[u], smoothest[u], 2));
+  report.check(r.number_of_singular_faces == 0 && worst < 1e-6,
+               "flat square: the curvature-aligned field of the free function is the smoothest one (" +
+                 std::to_string(worst) + " rad)");
+}
+
 int main()
 {
   Test_report report("alignment");
   check_limits_and_weight(report);
   check_cylinder(report);
+  check_flat_square(report);
   check_ellipsoid_umbilics(report);
   check_one_factorization(report);
   check_features(report);

@@ -184,9 +184,11 @@ public:
 
   // A and M of component c for a use that frees them (the eigen-solve of a
   // call that keeps nothing); matrices() assembles them again if asked for.
-  // Their scale is kept (see scale()).
+  // Assembled first if the assembly gave only the matrix of an aligned
+  // system (a guidance that then vanished); their scale is kept (see scale()).
   Energy_and_mass& matrices_of_single_use(std::size_t c)
   {
+    matrices(c);
     scale(c);
     return m_matrices[c];
   }
