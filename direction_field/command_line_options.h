@@ -43,6 +43,7 @@ struct Options
   bool eigenvalue_bound = false;
   std::string curvature_estimate = "quadric-fit";
   double feature_angle = -1.;  // negative: no feature alignment
+  unsigned int feature_cleanup = 4;  // --feature-cleanup: steps of erosion and growth of the sharp chains
   std::string solver = "default";
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
   bool distribute_from_given = false;
@@ -50,11 +51,8 @@ struct Options
   std::string huge_pages = "on";  // --huge-pages: malloc's transparent huge pages (huge_pages_rerun.h)
 };
 
-// The largest degree the program accepts. The library computes any degree up
-// to a million; the program's outputs grow with n (the VTK file holds n vectors
-// per vertex, the picture draws n strokes per vertex), and beyond a few hundred
-// directions most faces of a common mesh are singular anyway.
-constexpr int program_maximum_degree = 1000;
+// The largest degree the program accepts: the library's.
+constexpr int program_maximum_degree = CGAL::Surface_mesh_direction_fields::maximum_degree;
 
 // A problem with the input or the options: reported on one line, exit status 1.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
@@ -96,6 +94,9 @@ inline const Option_help option_help[] = {
   {"Alignment", "--constrain-boundary HOW", "tangent or normal: one direction fixed along the boundary"},
   {"Alignment", "--feature-angle DEG", "one direction follows the sharp edges, whose faces meet more than DEG "
                                        "degrees from flat (0 < DEG < 180; even n)"},
+  {"Alignment", "--feature-cleanup N", "with --feature-angle: open chains of sharp edges of at most 2N edges and "
+                                       "branches of at most N are dropped, as QuadWild does (default 4; 0 keeps "
+                                       "every sharp edge)"},
   {"Alignment", "--curvature-estimate HOW", "quadric-fit (default) or hopf (the paper's Hopf differential)"},
   {"Alignment", "--eigenvalue-bound", "also compute lambda_1 for aligned fields (the JSON's eigenvalue_bound)"},
   {"Outputs", "--directions FILE", "one 'x y z' per vertex of MESH, in its order (17 significant digits)"},
@@ -148,7 +149,7 @@ inline const char* const usage =
   "                       [--tolerance T] [--align none|curvature|min-curvature|max-curvature]\n"
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
-  "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG]\n"
+  "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG] [--feature-cleanup N]\n"
   "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
   "                       [--singularity-list FILE]"
   " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
@@ -269,6 +270,11 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--constrain-boundary") o.constrain_boundary = v;
   else if(a == "--curvature-estimate") o.curvature_estimate = v;
   else if(a == "--feature-angle") o.feature_angle = parse_number<double>(a, v);
+  else if(a == "--feature-cleanup")
+  {
+    o.feature_cleanup = parse_count(a, v);
+    if(o.feature_cleanup > 1000) throw Usage_error("--feature-cleanup expects an integer from 0 to 1000, got " + v);
+  }
   else if(a == "--solver") o.solver = v;
   else if(a == "--on") o.on = v;
   else if(a == "--petsc-options") o.petsc_options = v;

@@ -15,7 +15,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "command_line_options.h"
@@ -23,6 +23,7 @@
 #include "face_field_run.h"
 #include "file_io/optional_named_parameters.h"
 #include "huge_pages_rerun.h"
+#include "process_start.h"
 #include "file_io/output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
@@ -170,6 +171,19 @@ void read_prescription_line(const std::string& line, const std::string& where, s
     throw Usage_error(where + ": " + element + " " + std::to_string(number) + " is listed twice");
 }
 
+// Only interior vertices of a field on faces have an index: any other named
+// with a k is refused at its line of the file.
+void check_prescribed_vertex(const Mesh& mesh, const std::pair<std::size_t, int>& vk, const std::string& where)
+{
+  const Vertex_index v(static_cast<Mesh::size_type>(vk.first));
+  if(vk.second == 0) return;
+  if(mesh.is_isolated(v))
+    throw Usage_error(where + ": vertex " + std::to_string(vk.first) + " belongs to no face");
+  if(mesh.is_border(v))
+    throw Usage_error(where + ": vertex " + std::to_string(vk.first) + " is on the boundary, where a field on "
+                      "faces has no index (the boundary's turning is its component's boundary index)");
+}
+
 // --prescribe with --on faces: 'v k' per singular vertex, numbered as
 // --mesh-out and --singularities number them (the repaired mesh's vertices).
 std::vector<std::pair<Vertex_index, int> > read_vertex_prescription(const Options& o, const Mesh& mesh)
@@ -181,7 +195,14 @@ std::vector<std::pair<Vertex_index, int> > read_vertex_prescription(const Option
   {
     if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const std::string where = "line " + std::to_string(number) + " of '" + o.prescribe + "'";
-    read_prescription_line(line, where, mesh.number_of_vertices(), k_of_vertex, no_loops, true);
+    std::map<std::size_t, int> of_line;
+    read_prescription_line(line, where, mesh.number_of_vertices(), of_line, no_loops, true);
+    for(const auto& vk : of_line)
+    {
+      if(!k_of_vertex.emplace(vk).second)
+        throw Usage_error(where + ": vertex " + std::to_string(vk.first) + " is listed twice");
+      check_prescribed_vertex(mesh, vk, where);
+    }
   }
   std::vector<std::pair<Vertex_index, int> > prescription;
   for(const auto& vk : k_of_vertex)
@@ -330,11 +351,12 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
                                                 : SMDF::Principal_curvature_estimate::QUADRIC_FIT)
                 .vertex_magnitude_map(CGAL::make_property_map(field.magnitudes))
                 .singularities_output_iterator(std::back_inserter(field.singular_faces));
-  // --feature-angle: the edges whose faces meet at more than DEG from flat (CGAL's detection)
+  // --feature-angle: the edges whose faces meet at more than DEG from flat
   std::vector<unsigned char> feature_storage(input.mesh.number_of_edges(), 0);
   auto is_feature = CGAL::make_property_map(feature_storage);
   if(o.feature_angle > 0.)
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(input.mesh, o.feature_angle, is_feature);
+    SMDF::detect_feature_edges(input.mesh, o.feature_angle, is_feature,
+                               CGAL::parameters::feature_cleanup_steps(o.feature_cleanup));
   const Prescription prescription = o.prescribe.empty() ? Prescription() : read_prescription(o, input);
   onp::Given_options<Face_index, decltype(CGAL::make_property_map(guidance)), decltype(is_feature)> given;
   // lambda_t only when given: the library's default adapts to flat surfaces (lambda_1 = 0)
@@ -648,6 +670,13 @@ int main(int argc, char** argv)
   // factorization keep OpenBLAS to one thread where that is faster
   // (openblas_thread_control.h).
   CGAL::Surface_mesh_direction_fields::set_openblas_thread_control(true);
+  open_closed_standard_streams();
+  const std::string no_threads = threads_cannot_start();
+  if(!no_threads.empty())
+  {
+    std::cerr << "direction_field: error: " << no_threads << std::endl;
+    return EXIT_FAILURE;
+  }
   const int status = run(argc, argv);
   if(address_space_is_limited())
   {

@@ -9,7 +9,7 @@
 #include "file_io/read_and_repair_mesh.h"
 #include "reports.h"
 
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include <array>
@@ -40,7 +40,7 @@ SMDF::Direction_field_data field_data(const Mesh& mesh, int degree)
   return data;
 }
 
-// The feature edges of --feature-angle (CGAL's detection), as vertex pairs.
+// The feature edges of --feature-angle (the package's scale-safe detection), as vertex pairs.
 template <typename Mesh>
 std::vector<std::array<std::size_t, 2> > feature_edges(const Options& o, const Mesh& mesh,
                                                       std::vector<unsigned char>& is_feature)
@@ -48,7 +48,8 @@ std::vector<std::array<std::size_t, 2> > feature_edges(const Options& o, const M
   is_feature.assign(mesh.number_of_edges(), 0);
   std::vector<std::array<std::size_t, 2> > edges;
   if(!(o.feature_angle > 0.)) return edges;
-  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.feature_angle, CGAL::make_property_map(is_feature));
+  SMDF::detect_feature_edges(mesh, o.feature_angle, CGAL::make_property_map(is_feature),
+                             CGAL::parameters::feature_cleanup_steps(o.feature_cleanup));
   for(auto e : mesh.edges())
     if(is_feature[e]) edges.push_back({mesh.source(mesh.halfedge(e)), mesh.target(mesh.halfedge(e))});
   return edges;
@@ -169,6 +170,9 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"components\":" << r.components.size() << ",\"euler_characteristic\":" << chi << ",\"degree\":" << r.degree
      << ",\"eigenvalues\":[";
   for(std::size_t i = 0; i < r.components.size(); ++i) os << (i ? "," : "") << number(r.components[i].eigenvalue);
+  os << "],\"solves\":[";
+  for(std::size_t i = 0; i < r.components.size(); ++i)
+    os << (i ? "," : "") << "\"" << solve_name(r.components[i].solve) << "\"";
   os << "],\"iterations\":" << r.iterations << ",\"residual\":" << number(r.residual)
      << ",\"converged\":" << (r.converged ? "true" : "false")
      << ",\"singular_vertices\":" << r.number_of_singular_vertices << ",\"index_sum\":" << r.index_sum
@@ -195,8 +199,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];
-    os << "component " << i << "  eigenvalue " << c.eigenvalue << ", " << c.iterations << " iterations, "
-       << c.number_of_singular_vertices << " singular vertices, index sum " << c.index_sum << "/" << r.degree
+    os << "component " << i << "  " << describe_solve(c) << ", " << c.number_of_singular_vertices
+       << " singular vertices, index sum " << c.index_sum << "/" << r.degree
        << " (boundary " << c.boundary_index << "/" << r.degree << ", Euler characteristic " << c.euler_characteristic
        << ")\n";
   }

@@ -42,6 +42,34 @@ inline std::string number(double x)
   return os.str();
 }
 
+// What gave a component its field, for the JSON ("solves") and the summary.
+inline const char* solve_name(SMDF::Field_solve solve)
+{
+  return solve == SMDF::Field_solve::EIGEN_SOLVE    ? "eigen-solve"
+         : solve == SMDF::Field_solve::LINEAR_SOLVE ? "linear solve"
+                                                    : "parallel section";
+}
+
+// The summary's words for a component's solve: the eigenvalue, iterations
+// and residual of an eigen-solve; the system of an aligned or constrained
+// field (with lambda_1 where it was computed beside it); the parallel
+// section of prescribed singularities.
+template <typename Report>
+std::string describe_solve(const Report& c)
+{
+  std::ostringstream os;
+  if(c.solve == SMDF::Field_solve::PARALLEL_SECTION) return "parallel section of the changed connection";
+  if(c.solve == SMDF::Field_solve::LINEAR_SOLVE)
+  {
+    os << "linear solve (A - lambda_t M) u = M q, lambda_t = " << c.lambda;
+    if(!std::isnan(c.eigenvalue)) os << " (lambda_1 = " << c.eigenvalue << ", " << c.iterations << " iterations)";
+    return os.str();
+  }
+  os << "eigen-solve: eigenvalue " << c.eigenvalue << ", " << c.iterations << " iterations, residual " << c.residual
+     << (c.converged ? "" : " (not converged)");
+  return os.str();
+}
+
 // The largest component: the one whose lambda and t the JSON reports.
 inline const SMDF::Component_report& main_component(const SMDF::Direction_field_result& r)
 {
@@ -83,6 +111,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
     os << "]";
   };
   array("eigenvalues", [](const SMDF::Component_report& c) { return number(c.eigenvalue); });
+  array("solves", [](const SMDF::Component_report& c) { return std::string("\"") + solve_name(c.solve) + "\""; });
   array("component_euler_characteristics", [](const SMDF::Component_report& c) { return std::to_string(c.euler_characteristic); });
   array("component_index_sums", [](const SMDF::Component_report& c) { return std::to_string(c.index_sum); });
   array("component_low_magnitude_fractions",
@@ -152,12 +181,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];
-    os << "component " << std::setw(4) << i << "  eigenvalue ";
-    if(std::isnan(c.eigenvalue)) os << "not computed";
-    else os << c.eigenvalue;
-    os << ", " << c.iterations
-       << " iterations, residual " << c.residual << (c.converged ? "" : " (not converged)") << ", "
-       << c.number_of_singular_faces << " singular faces, index sum " << c.index_sum << "/" << r.degree;
+    os << "component " << std::setw(4) << i << "  " << describe_solve(c) << ", " << c.number_of_singular_faces
+       << " singular faces, index sum " << c.index_sum << "/" << r.degree;
     if(c.low_magnitude_fraction > 0.)
       os << "; " << 100. * c.low_magnitude_fraction << "% of its vertices below the solve's accuracy";
     os << "\n";

@@ -20,7 +20,7 @@ struct Face_field_result
 };
 
 const char* const face_option_names[] = {"degree", "align", "boundary", "guidance", "alignment_weight", "lambda_t",
-                                         "constraints", "feature_edges", "feature_angle", "prescribed", "intrinsic_mollification",
+                                         "constraints", "feature_edges", "feature_angle", "feature_cleanup", "prescribed", "intrinsic_mollification",
                                          "max_iterations", "tolerance", "seed"};
 
 struct Face_options
@@ -112,7 +112,8 @@ SMDF::Face_direction_field_result compute_on_faces(Mesh& mesh, const Face_option
   std::vector<unsigned char> is_feature(mesh.number_of_edges(), 0);
   for(Edge_index e : o.common.features) is_feature[e] = 1;
   if(o.common.feature_angle)
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.common.feature_angle, CGAL::make_property_map(is_feature));
+    SMDF::detect_feature_edges(mesh, *o.common.feature_angle, CGAL::make_property_map(is_feature),
+                               CGAL::parameters::feature_cleanup_steps(o.common.feature_cleanup));
   std::vector<Kernel::Vector_3> guidance = o.guidance;
   std::vector<unsigned char> constrained(mesh.number_of_faces(), 0);
   std::vector<Kernel::Vector_3> wanted(mesh.number_of_faces(), CGAL::NULL_VECTOR);
@@ -159,10 +160,32 @@ py::array_t<long long> face_side_jumps(const Mesh& mesh, const Index_array& F, c
   return jumps;
 }
 
+Face_field_result with_read_only_arrays(Face_field_result r)
+{
+  make_read_only(r.face_directions, r.pd2, r.singular_vertices, r.matching, r.mismatch);
+  return r;
+}
+
+// The unit normal of face f at any scale of the coordinates (PMP's
+// compute_face_normal() squares a raw cross product, which overflows from
+// coordinates near 1e77).
+inline Kernel::Vector_3 unit_face_normal(const Mesh& mesh, Face_index f)
+{
+  std::array<SMDF::internal::Vec3, 3> corner;
+  int c = 0;
+  for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+  {
+    const Kernel::Point_3& p = mesh.point(v);
+    corner[static_cast<std::size_t>(c++)] = {p.x(), p.y(), p.z()};
+  }
+  const SMDF::internal::Vec3 n = SMDF::internal::triangle_unit_normal(corner[0], corner[1], corner[2]);
+  return Kernel::Vector_3(n[0], n[1], n[2]);
+}
+
 Face_field_result compute_face_directions(const py::object& V, const py::object& F, const py::kwargs& kw)
 {
   const Index_array rows = integer_array(F, "F");
-  Mesh mesh = make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"), rows);
+  Mesh mesh = make_mesh(real_array(V, "V", "an array of numbers of shape (number of vertices, 3)"), rows);
   const Face_options o = read_face_options(kw, mesh);
   std::vector<Kernel::Vector_3> directions(mesh.number_of_faces(), CGAL::NULL_VECTOR);
   std::vector<std::pair<Vertex_index, int> > singular;
@@ -180,7 +203,7 @@ Face_field_result compute_face_directions(const py::object& V, const py::object&
   const double turn = 2. * CGAL_PI / o.common.degree;
   for(Face_index f : mesh.faces())
   {
-    const Kernel::Vector_3 normal = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+    const Kernel::Vector_3 normal = unit_face_normal(mesh, f);
     const Kernel::Vector_3& x = directions[f];
     const Kernel::Vector_3 y = std::cos(turn) * x + std::sin(turn) * CGAL::cross_product(normal, x);
     for(int c = 0; c < 3; ++c) { d(py::ssize_t(f), c) = x[c]; d2(py::ssize_t(f), c) = y[c]; }
@@ -199,12 +222,12 @@ Face_field_result compute_face_directions(const py::object& V, const py::object&
   const long long n = o.common.degree;
   for(py::ssize_t f = 0; f < nf; ++f)
     for(int c = 0; c < 3; ++c) mm(f, c) = ((jm(f, c) % n) + n) % n;
-  return r;
+  return with_read_only_arrays(std::move(r));
 }
 
 const char* const face_doc =
   "compute_face_directions(V, F, /, *, degree=4, align=None, guidance=None, lambda_t=None, alignment_weight=None,\n"
-  "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None,\n"
+  "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None, feature_cleanup=4,\n"
   "                        prescribed=None, intrinsic_mollification=1e-6, max_iterations=1000, tolerance=1e-10,\n"
   "                        seed=0)\n\n"
   "The smoothest (or aligned) n-direction field on the faces of the mesh (V, F): one direction per face,\n"
@@ -219,7 +242,7 @@ const char* const face_doc =
 
 void bind_face_field(py::module_& m)
 {
-  py::class_<Face_field_result>(m, "FaceField", "A field on faces: arrays and the report of one computation.")
+  py::class_<Face_field_result>(m, "FaceField", "A field on faces: read-only arrays and the report of one computation.")
     .def_readonly("face_directions", &Face_field_result::face_directions, "(|F|, 3) unit direction per face")
     .def_readonly("pd2", &Face_field_result::pd2, "(|F|, 3) the direction turned by 2 pi / n about the face normal")
     .def_readonly("singular_vertices", &Face_field_result::singular_vertices, "(k, 2) int64: vertex, k")
@@ -233,6 +256,8 @@ void bind_face_field(py::module_& m)
       for(const auto& c : r.report.components) values.push_back(c.eigenvalue);
       return values;
     })
+    .def_property_readonly("solves", [](const Face_field_result& r) { return solve_names(r.report); },
+                           "per component: 'eigen-solve', 'linear solve' or 'parallel section'")
     .def_property_readonly("boundary_indices", [](const Face_field_result& r) {
       std::vector<long long> values;
       for(const auto& c : r.report.components) values.push_back(c.boundary_index);
@@ -260,7 +285,14 @@ void bind_face_field(py::module_& m)
         r.matching = read.next<py::array_t<long long> >();
         r.mismatch = read.next<py::array_t<long long> >();
         r.report = face_report_from(read.next<py::tuple>());
-        return r;
+        check_state_degree(r.report.degree);
+        const py::ssize_t nf = r.face_directions.ndim() > 0 ? r.face_directions.shape(0) : -1;
+        check_state_shape(r.face_directions, {nf, 3}, "face_directions");
+        check_state_shape(r.pd2, {nf, 3}, "pd2");
+        check_state_shape(r.singular_vertices, {-1, 2}, "singular_vertices");
+        check_state_shape(r.matching, {nf, 3}, "matching");
+        check_state_shape(r.mismatch, {nf, 3}, "mismatch");
+        return with_read_only_arrays(std::move(r));
       }))
     .def("__repr__", [](const Face_field_result& r) {
       return "<FaceField n=" + std::to_string(r.report.degree) + ", " + std::to_string(r.face_directions.shape(0)) +

@@ -26,7 +26,7 @@ struct File_error : std::runtime_error { using std::runtime_error::runtime_error
 // The field of `result` on the mesh of V and F, as the files need it.
 SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, const Result& result)
 {
-  Mesh mesh = make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
+  Mesh mesh = make_mesh(real_array(V, "V", "an array of numbers of shape (number of vertices, 3)"),
                         integer_array(F, "F"));
   const auto d = result.directions.unchecked<2>();
   const auto m = result.magnitudes.unchecked<1>();

@@ -6,13 +6,14 @@
 
 #include "python_mesh.h"
 
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
 
 #include "file_io/messages.h"
 #include "file_io/optional_named_parameters.h"
 
 #include <complex>
 #include <initializer_list>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -33,6 +34,7 @@ struct Options
   std::vector<Edge_index> features;                        // empty: none
   bool has_features = false;
   std::optional<double> feature_angle;
+  unsigned int feature_cleanup = 4;  // detect_feature_edges()' feature_cleanup_steps
   std::optional<std::vector<std::pair<Face_index, int> > > prescribed;
   std::optional<std::vector<std::pair<std::size_t, int> > > loop_turns;
   double intrinsic_mollification = 1e-6;
@@ -83,9 +85,23 @@ struct Maps
   }
 };
 
+// An array of real numbers as float64: integers and floats; complex numbers
+// (numpy would drop the imaginary part), booleans and objects refused.
+Float_array real_array(const py::handle& value, const char* name, const char* what)
+{
+  py::array a;
+  try { a = py::module_::import("numpy").attr("asarray")(value); }
+  catch(const py::error_already_set&) { throw py::type_error(std::string(name) + " must be " + what); }
+  const char kind = a.dtype().kind();
+  if(kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::type_error(std::string(name) + " must be " + what + " (got an array of dtype " +
+                         std::string(py::str(a.dtype())) + ")");
+  return option_as<Float_array>(a, name, what);
+}
+
 Float_array rows_of_three(const py::object& value, std::size_t rows, const char* name)
 {
-  const Float_array a = option_as<Float_array>(value, name, "an array of numbers");
+  const Float_array a = real_array(value, name, "an array of numbers");
   if(a.ndim() != 2 || a.shape(1) != 3 || static_cast<std::size_t>(a.shape(0)) != rows)
     refuse(std::string(name) + " must be an array of shape (" + std::to_string(rows) + ", 3)");
   const auto r = a.unchecked<2>();
@@ -113,6 +129,13 @@ Index_array integer_array(const py::object& value, const char* name)
   }
   else if(kind != 'i' && kind != 'u')
     throw py::type_error(std::string(name) + " must be an array of integers");
+  else if(kind == 'u' && a.itemsize() == 8)  // 2^64 - 1 would become -1
+  {
+    const py::array_t<unsigned long long, py::array::c_style | py::array::forcecast> u(a);
+    for(py::ssize_t i = 0; i < u.size(); ++i)
+      if(u.data()[i] > static_cast<unsigned long long>((std::numeric_limits<long long>::max)()))
+        refuse(std::string(name) + " must hold integers below 2^63, got " + std::to_string(u.data()[i]));
+  }
   return option_as<Index_array>(a, name, "an array of integers");
 }
 
@@ -133,6 +156,17 @@ unsigned int count_option(const py::handle& value, const char* name)
   const py::int_ i = py::reinterpret_borrow<py::int_>(value);
   if(i < py::int_(0) || i > py::int_(4294967295ULL)) refuse(std::string(name) + " must be " + what);
   return py::cast<unsigned int>(i);
+}
+
+// The degree n: a Python integer (not a bool) from 1 to maximum_degree.
+int degree_option(const py::handle& value)
+{
+  const std::string what = "an integer from 1 to " + std::to_string(SMDF::maximum_degree);
+  if(!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+    throw py::type_error("degree must be " + what);
+  const py::int_ i = py::reinterpret_borrow<py::int_>(value);
+  if(i < py::int_(1) || i > py::int_(SMDF::maximum_degree)) refuse("degree must be " + what);
+  return py::cast<int>(i);
 }
 
 // constraints = (vertex ids, directions k x 3)
@@ -227,7 +261,7 @@ void read_enumerations(const py::dict& kw, Options& o)
 
 const char* const option_names[] = {"degree", "s", "align", "curvature_estimate", "boundary", "guidance",
                                     "alignment_weight", "lambda_t", "eigenvalue_bound", "constraints",
-                                    "feature_edges", "feature_angle", "prescribed", "prescribed_loop_turns",
+                                    "feature_edges", "feature_angle", "feature_cleanup", "prescribed", "prescribed_loop_turns",
                                     "intrinsic_mollification", "normals", "max_iterations", "tolerance", "seed",
                                     "progress"};
 
@@ -241,7 +275,7 @@ Options read_options(const py::dict& kw, Mesh& mesh)
       throw py::type_error("unexpected keyword argument '" + key + "'");
   }
   Options o;
-  if(kw.contains("degree")) o.degree = option_as<int>(kw["degree"], "degree", "an integer");
+  if(kw.contains("degree")) o.degree = degree_option(kw["degree"]);
   if(kw.contains("s")) o.s = option_as<double>(kw["s"], "s", "a number");
   read_enumerations(kw, o);
   auto given = [&](const char* key) { return kw.contains(key) && !kw[key].is_none(); };
@@ -261,6 +295,11 @@ Options read_options(const py::dict& kw, Mesh& mesh)
     const double angle = option_as<double>(kw["feature_angle"], "feature_angle", "a number");
     if(!(angle > 0. && angle < 180.)) refuse("feature_angle must lie in (0, 180) degrees");
     o.feature_angle = angle;
+  }
+  if(kw.contains("feature_cleanup"))
+  {
+    o.feature_cleanup = count_option(kw["feature_cleanup"], "feature_cleanup");
+    if(o.feature_cleanup > 1000) refuse("feature_cleanup must be from 0 to 1000");
   }
   if(given("prescribed")) read_prescribed(kw["prescribed"], mesh, o);
   if(given("prescribed_loop_turns"))
@@ -327,7 +366,9 @@ void fill_maps(const Options& o, Mesh& mesh, Maps& maps)
     maps.feature = mesh.add_property_map<Edge_index, bool>("e:smdf_feature", false).first;
     for(Edge_index e : mesh.edges()) put(maps.feature, e, false);
     for(Edge_index e : o.features) put(maps.feature, e, true);
-    if(o.feature_angle) CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *o.feature_angle, maps.feature);
+    if(o.feature_angle)
+      SMDF::detect_feature_edges(mesh, *o.feature_angle, maps.feature,
+                                 CGAL::parameters::feature_cleanup_steps(o.feature_cleanup));
   }
 }
 

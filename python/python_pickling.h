@@ -8,6 +8,8 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 
+#include <initializer_list>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,53 @@ public:
   }
 };
 
+// An array as the results give it: read-only, so that changing one
+// attribute's values cannot change another's (all_directions is made from
+// directions and normals) or a copy's.
+template <typename... Arrays>
+void make_read_only(Arrays&... arrays)
+{
+  (arrays.attr("setflags")(py::arg("write") = false), ...);
+}
+
+// A restored state is checked as strictly as arrays from a user: each array
+// has its number of dimensions and the extents given (-1: any), so that no
+// method reads past an array that disagrees with the others.
+inline void check_state_shape(const py::array& a, std::initializer_list<py::ssize_t> shape, const char* name)
+{
+  bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
+  py::ssize_t d = 0;
+  for(py::ssize_t extent : shape)
+  {
+    if(ok && extent >= 0 && a.shape(d) != extent) ok = false;
+    ++d;
+  }
+  if(!ok) refuse(std::string("the pickled state's ") + name + " does not have the shape of the result's other arrays");
+}
+
+inline void check_state_degree(int degree)
+{
+  if(degree < 1 || degree > SMDF::maximum_degree)
+    refuse("the pickled state's degree " + std::to_string(degree) + " is not from 1 to " +
+           std::to_string(SMDF::maximum_degree));
+}
+
+// The names of Field_solve, as the program's JSON writes them ("solves").
+inline const char* solve_name(SMDF::Field_solve solve)
+{
+  return solve == SMDF::Field_solve::EIGEN_SOLVE    ? "eigen-solve"
+         : solve == SMDF::Field_solve::LINEAR_SOLVE ? "linear solve"
+                                                    : "parallel section";
+}
+
+template <typename Report>
+std::vector<std::string> solve_names(const Report& report)
+{
+  std::vector<std::string> names;
+  for(const auto& c : report.components) names.push_back(solve_name(c.solve));
+  return names;
+}
+
 py::tuple timings_state(const SMDF::Direction_field_timings& t)
 {
   return py::make_tuple(t.setup_ms, t.factorization_ms, t.solve_ms, t.total_ms);
@@ -50,7 +99,14 @@ py::tuple component_state(const SMDF::Component_report& c)
 {
   return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, c.eigenvalue,
                         c.lambda, c.alignment_weight, c.iterations, c.residual, c.converged, c.index_sum,
-                        c.number_of_singular_faces, c.low_magnitude_fraction);
+                        c.number_of_singular_faces, c.low_magnitude_fraction, static_cast<int>(c.solve));
+}
+
+SMDF::Field_solve solve_from(int value)
+{
+  if(value < 0 || value > static_cast<int>(SMDF::Field_solve::PARALLEL_SECTION))
+    refuse("the pickled state's solve " + std::to_string(value) + " is not one of this module's");
+  return static_cast<SMDF::Field_solve>(value);
 }
 
 SMDF::Component_report component_from(const py::tuple& state)
@@ -70,6 +126,7 @@ SMDF::Component_report component_from(const py::tuple& state)
   c.index_sum = r.next<int>();
   c.number_of_singular_faces = r.next<std::size_t>();
   c.low_magnitude_fraction = r.next<double>();
+  c.solve = solve_from(r.next<int>());
   return c;
 }
 
@@ -109,7 +166,7 @@ py::tuple face_component_state(const SMDF::Face_field_component_report& c)
 {
   return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, c.eigenvalue,
                         c.lambda, c.alignment_weight, c.iterations, c.residual, c.converged, c.index_sum,
-                        c.boundary_index, c.number_of_singular_vertices);
+                        c.boundary_index, c.number_of_singular_vertices, static_cast<int>(c.solve));
 }
 
 SMDF::Face_field_component_report face_component_from(const py::tuple& state)
@@ -129,6 +186,7 @@ SMDF::Face_field_component_report face_component_from(const py::tuple& state)
   c.index_sum = r.next<long long>();
   c.boundary_index = r.next<long long>();
   c.number_of_singular_vertices = r.next<std::size_t>();
+  c.solve = solve_from(r.next<int>());
   return c;
 }
 

@@ -9,6 +9,14 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_data.h>
 
+#include <atomic>
+#include <cerrno>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace {
 
 typedef Eigen::SparseMatrix<std::complex<double> > Complex_matrix;
@@ -114,6 +122,13 @@ Field_values copy_field(const Mesh& mesh, const Maps& maps, bool user_normals)
   return values;
 }
 
+Result with_read_only_arrays(Result r)
+{
+  make_read_only(r.directions, r.magnitudes, r.coefficients, r.normals, r.tangent_frames, r.singular_faces,
+                 r.loop_turns);
+  return r;
+}
+
 // The arrays of one computed field (with the GIL held).
 Result make_result(Field_values values)
 {
@@ -147,7 +162,7 @@ Result make_result(Field_values values)
   }
   for(const auto& c : values.report.components) r.eigenvalues.push_back(c.eigenvalue);
   r.report = std::move(values.report);
-  return r;
+  return with_read_only_arrays(std::move(r));
 }
 
 // A message of the C++ library with its named parameters called by the
@@ -176,8 +191,41 @@ void warn_not_converged(const SMDF::Direction_field_result& report)
   const std::string text = "the eigen-solve did not converge in " + std::to_string(report.iterations) +
                            " iterations (relative residual " + compact(report.residual) +
                            "); raise max_iterations or tolerance";
-  if(PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+  // at the caller's line: level 1 is the package's Python wrapper that called the module
+  if(PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 2) != 0) throw py::error_already_set();
 }
+
+// One call at a time on an object. A call from the thread that holds it
+// (the object's own progress callback calling back into it) is an error: it
+// would wait for itself.
+class Busy_lock
+{
+  std::mutex m_mutex;
+  std::atomic<std::thread::id> m_holder{};
+
+public:
+  class Guard
+  {
+    Busy_lock& m_lock;
+
+  public:
+    explicit Guard(Busy_lock& lock) : m_lock(lock)
+    {
+      if(m_lock.m_holder.load() == std::this_thread::get_id())
+        throw std::runtime_error("this DirectionField is busy with a call that has not returned (a progress "
+                                 "callback cannot call back into the object it reports on)");
+      m_lock.m_mutex.lock();
+      m_lock.m_holder.store(std::this_thread::get_id());
+    }
+    ~Guard()
+    {
+      m_lock.m_holder.store(std::thread::id());
+      m_lock.m_mutex.unlock();
+    }
+    Guard(const Guard&) = delete;
+    Guard& operator=(const Guard&) = delete;
+  };
+};
 
 // The module's object: its own copy of the mesh (with the maps of the
 // options) and, once compute() is called, the C++ class over it.
@@ -185,7 +233,7 @@ class Direction_field_object
 {
 public:
   Direction_field_object(const py::object& V, const py::object& F)
-    : m_mesh(make_mesh(option_as<Float_array>(V, "V", "an array of numbers of shape (number of vertices, 3)"),
+    : m_mesh(make_mesh(real_array(V, "V", "an array of numbers of shape (number of vertices, 3)"),
                        integer_array(F, "F"))),
       m_maps(m_mesh)
   {}
@@ -205,7 +253,7 @@ public:
     {
       // the computation runs without the GIL: other Python threads go on (one object, one call at a time)
       py::gil_scoped_release release;
-      std::lock_guard<std::mutex> lock(m_busy);
+      Busy_lock::Guard lock(m_busy);
       fill_maps(o, m_mesh, m_maps);
       if(as_free_function && o.normals.empty())
         report = compute_field([&](const auto& np) {
@@ -255,7 +303,7 @@ public:
     try
     {
       py::gil_scoped_release release;
-      std::lock_guard<std::mutex> lock(m_busy);
+      Busy_lock::Guard lock(m_busy);
       if(!m_field || mollification != m_mollification)
       {
         Options o;  // the normals do not enter A and M
@@ -277,7 +325,7 @@ public:
   double construction_ms()
   {
     py::gil_scoped_release release;  // a compute() of another thread may hold the lock
-    std::lock_guard<std::mutex> lock(m_busy);
+    Busy_lock::Guard lock(m_busy);
     return m_field ? m_field->construction_ms() : 0.;
   }
 
@@ -301,7 +349,7 @@ private:
   std::unique_ptr<Field> m_field;
   double m_mollification = 1e-6;           // of m_field's construction
   std::vector<Kernel::Vector_3> m_normals;  // of m_field's construction (empty: the angle-weighted ones)
-  std::mutex m_busy;
+  Busy_lock m_busy;
 };
 
 py::dict timings_of(const SMDF::Direction_field_result& r)
@@ -368,12 +416,23 @@ Result result_from(const py::tuple& state)
   r.loop_turns = read.next<py::array_t<long long> >();
   r.eigenvalues = read.next<std::vector<double> >();
   r.report = report_from(read.next<py::tuple>());
-  return r;
+  check_state_degree(r.report.degree);
+  const py::ssize_t nv = r.directions.ndim() > 0 ? r.directions.shape(0) : -1;
+  check_state_shape(r.directions, {nv, 3}, "directions");
+  check_state_shape(r.magnitudes, {nv}, "magnitudes");
+  check_state_shape(r.coefficients, {nv}, "coefficients");
+  check_state_shape(r.normals, {nv, 3}, "normals");
+  check_state_shape(r.tangent_frames, {nv, 2, 3}, "tangent_frames");
+  check_state_shape(r.singular_faces, {-1, 2}, "singular_faces");
+  check_state_shape(r.loop_turns, {-1, 2}, "loop_turns");
+  if(r.eigenvalues.size() != r.report.components.size())
+    refuse("the pickled state's eigenvalues do not match its components");
+  return with_read_only_arrays(std::move(r));
 }
 
 void bind_result(py::module_& m)
 {
-  py::class_<Result>(m, "Result", "One computed field: numpy arrays and the solver's report.")
+  py::class_<Result>(m, "Result", "One computed field: read-only numpy arrays and the solver's report.")
     .def_readonly("directions", &Result::directions, "unit tangent direction per vertex, shape (|V|, 3)")
     .def_readonly("magnitudes", &Result::magnitudes, "|u| per vertex before normalization, shape (|V|,)")
     .def_readonly("singular_faces", &Result::singular_faces,
@@ -381,11 +440,21 @@ void bind_result(py::module_& m)
     .def_readonly("loop_turns", &Result::loop_turns,
                   "shape (m, 2): loop, turns for each loop along which the field turns other than the nearest "
                   "choice (give it back as prescribed_loop_turns with singular_faces as prescribed)")
-    .def_readonly("eigenvalues", &Result::eigenvalues, "the smallest eigenvalue per component (nan if not computed)")
-    .def_property_readonly("degree", [](const Result& r) { return r.report.degree; })
-    .def_property_readonly("iterations", [](const Result& r) { return r.report.iterations; })
-    .def_property_readonly("residual", [](const Result& r) { return r.report.residual; })
-    .def_property_readonly("converged", [](const Result& r) { return r.report.converged; })
+    .def_readonly("eigenvalues", &Result::eigenvalues,
+                  "the smallest eigenvalue per component (nan where not computed: see solves)")
+    .def_property_readonly("solves", [](const Result& r) { return solve_names(r.report); },
+                           "what gave each component its field: 'eigen-solve' (the smoothest field), 'linear solve' "
+                           "(aligned or constrained: (A - lambda_t M) u = M q) or 'parallel section' (prescribed)")
+    .def_property_readonly("degree", [](const Result& r) { return r.report.degree; },
+                           "n: the number of directions at each vertex (1 vector, 2 line, 4 cross field)")
+    .def_property_readonly("iterations", [](const Result& r) { return r.report.iterations; },
+                           "the largest number of eigen-solve iterations over the components (0 without one)")
+    .def_property_readonly("residual", [](const Result& r) { return r.report.residual; },
+                           "the largest final residual over the components: |A u - lambda M u| / (s_A |M u|), "
+                           "s_A = trace(A) / trace(M) of DirectionField.matrices(), so that it does not depend on "
+                           "the mesh's scale (times s_A it is |A u - lambda M u| / |M u| as scipy gives it)")
+    .def_property_readonly("converged", [](const Result& r) { return r.report.converged; },
+                           "whether every component reached the tolerance (a linear solve always does)")
     .def_property_readonly("tangent_plane_vertices", [](const Result& r) { return r.report.tangent_plane_vertices; },
                            "vertices of folded triangles laid out in the fitted tangent plane (0 without folds)")
     .def_property_readonly("index_sum", [](const Result& r) { return r.report.index_sum; },
@@ -422,7 +491,7 @@ void bind_result(py::module_& m)
 const char* const compute_doc =
   "Computes the globally optimal n-direction field of the mesh.\n\n"
   "Keyword arguments (the named parameters of the C++ function):\n"
-  "  degree=4            n: 1 vector, 2 line, 4 cross field ...\n"
+  "  degree=4            n: 1 vector, 2 line, 4 cross field ... (1 to 1000, as in C++ and the program)\n"
   "  s=0.0               the energy, in [-1, 1]: -1 anti-holomorphic, 0 Dirichlet, +1 holomorphic\n"
   "  align=None          'curvature' (= 'max-curvature'), 'min-curvature' or None (even n)\n"
   "  curvature_estimate  'quadric-fit' (default) or 'hopf'\n"
@@ -432,6 +501,8 @@ const char* const compute_doc =
   "  constraints=None    (vertex ids, (k, 3) directions): hard constraints\n"
   "  boundary=None       'tangent' or 'normal': one direction along the boundary\n"
   "  feature_edges=None  (E, 2) vertex pairs, or feature_angle=DEG: sharp edges to follow (even n)\n"
+  "  feature_cleanup=4   with feature_angle: open chains of at most 2N sharp edges and branches of at most N\n"
+  "                      are dropped, as QuadWild does (0 keeps every sharp edge)\n"
   "  prescribed=None     (k, 2) face, k: place the singularities (index k / n)\n"
   "  prescribed_loop_turns=None   (m, 2) loop, turns: with prescribed, the field's turns along the mesh's loops\n"
   "                      (Result.loop_turns gives a field's own)\n"
@@ -477,9 +548,25 @@ py::dict file_maps(const Repaired_mesh<Mesh>& in)
   return maps;
 }
 
+// A file that cannot be opened raises the OSError that open() raises
+// (FileNotFoundError, PermissionError, IsADirectoryError), not a ValueError.
+void check_readable(const std::string& path)
+{
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  struct stat status{};
+  const bool directory = fd >= 0 && ::fstat(fd, &status) == 0 && S_ISDIR(status.st_mode);
+  const int error = fd < 0 ? errno : EISDIR;
+  if(fd >= 0) ::close(fd);
+  if(fd >= 0 && !directory) return;
+  errno = error;
+  PyErr_SetFromErrnoWithFilename(PyExc_OSError, path.c_str());
+  throw py::error_already_set();
+}
+
 py::tuple read_mesh(const py::object& path_object, bool with_maps)
 {
   const std::string path = path_argument(path_object);
+  check_readable(path);
   Repaired_mesh<Mesh> in;
   {
     py::gil_scoped_release release;
@@ -531,8 +618,9 @@ void bind_field(py::module_& m)
     .def("compute", [](Direction_field_object* f, const py::kwargs& kw) { return initialized(f).compute(kw); },
          compute_doc)
     .def("_matrices",
-         [](Direction_field_object* f, int degree, double s, double mollification) {
-           std::pair<Complex_matrix, Complex_matrix> am = initialized(f).matrices(degree, s, mollification);
+         [](Direction_field_object* f, const py::object& degree, double s, double mollification) {
+           std::pair<Complex_matrix, Complex_matrix> am =
+             initialized(f).matrices(degree_option(degree), s, mollification);
            return py::make_tuple(compressed_columns(std::move(am.first)), compressed_columns(std::move(am.second)));
          },
          py::kw_only(), py::arg("degree"), py::arg("s"), py::arg("intrinsic_mollification"),

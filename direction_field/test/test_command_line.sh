@@ -583,6 +583,20 @@ env -u GLIBC_TUNABLES "$bin" "$out/octahedron.off" --json > "$out/small.json"
 check "a small file: no rerun (huge_pages false)" test "$(huge_of "$out/small.json")" = false
 GLIBC_TUNABLES=glibc.malloc.arena_max=4 "$bin" "$out/grid.off" --json > "$out/grid_user.json"
 check "GLIBC_TUNABLES of the user's kept (huge_pages false)" test "$(huge_of "$out/grid_user.json")" = false
+# a value glibc rejects (hugetlb takes 0 to 2) gives no huge pages: the JSON says so
+GLIBC_TUNABLES=glibc.malloc.hugetlb=10 "$bin" "$out/octahedron.off" --json > "$out/tunable_10.json"
+check "GLIBC_TUNABLES glibc.malloc.hugetlb=10 (rejected by glibc): huge_pages false" \
+      test "$(huge_of "$out/tunable_10.json")" = false
+GLIBC_TUNABLES=glibc.malloc.hugetlb=1 "$bin" "$out/octahedron.off" --json > "$out/tunable_1.json"
+check "GLIBC_TUNABLES glibc.malloc.hugetlb=1: huge_pages true" test "$(huge_of "$out/tunable_1.json")" = true
+# started through the dynamic loader, /proc/self/exe is the loader: no rerun, the same directions
+loader=$(ldd "$bin" | awk '/ld-linux/ {print $1}' | head -n 1)
+if [ -x "$loader" ]; then
+  env -u GLIBC_TUNABLES "$loader" "$bin" "$out/grid.off" --json --directions "$out/grid_loader.txt" > "$out/grid_loader.json"
+  check "grid started through the dynamic loader ($loader): exit 0" test $? -eq 0
+  check "grid through the loader: huge_pages false (no rerun)" test "$(huge_of "$out/grid_loader.json")" = false
+  check "grid through the loader: the same directions" cmp -s "$out/grid_loader.txt" "$out/grid_off.txt"
+fi
 
 echo "command line: $passed passed, $failed failed"
 test $failed -eq 0 || exit 1

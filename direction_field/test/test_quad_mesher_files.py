@@ -74,20 +74,56 @@ def sides_of_edges(faces):
     return sides
 
 
+def cleaned_up(sharp, border, points, steps=4):
+    """QuadWild's erosion and dilation of its features, as --feature-cleanup does it: `steps` times the edges
+    at a free end (one sharp edge, not on the boundary) go, unless longer than 5% of the bounding box's
+    diagonal; then `steps` times those touching a free end that was no junction come back."""
+    low = [min(p[i] for p in points) for i in range(3)]
+    high = [max(p[i] for p in points) for i in range(3)]
+    longest = 0.05 * math.sqrt(sum((h - l) ** 2 for h, l in zip(high, low)))
+
+    def count(edges):
+        c = {}
+        for a, b in edges:
+            c[a] = c.get(a, 0) + 1
+            c[b] = c.get(b, 0) + 1
+        return c
+
+    def free(c, v):
+        return c.get(v, 0) == 1 and v not in border
+    first = count(sharp)
+    junction = {v for v, k in first.items() if k > 2 or (v in border and k > 0)}
+    kept = set(sharp)
+    for _ in range(steps):
+        c = count(kept)
+        kept = {(a, b) for a, b in kept if math.dist(points[a], points[b]) > longest or not (free(c, a) or free(c, b))}
+    for _ in range(steps):
+        c = count(kept)
+        kept |= {(a, b) for a, b in sharp if (free(c, a) and a not in junction) or (free(c, b) and b not in junction)}
+    return kept
+
+
 def expected_sharp(points, faces, angle):
-    """(face, edge, type) of every side of a boundary edge or of an edge sharper than `angle`."""
+    """(face, edge, type) of every side of a boundary edge or of an edge sharper than `angle`, cleaned up."""
     lines = set()
-    for key, s in sides_of_edges(faces).items():
+    sides = sides_of_edges(faces)
+    border = {v for key, s in sides.items() if len(s) == 1 for v in key}
+    sharp = set()
+    for key, s in sides.items():
         if len(s) == 1:
             lines.add((s[0][0], s[0][1], 1))
         elif len(s) == 2 and angle is not None:
             (f, c), (g, d) = s
             nf, ng = face_normal(points, faces[f]), face_normal(points, faces[g])
-            if math.degrees(math.acos(max(-1., min(1., dot(nf, ng))))) > angle:
-                along = sub(points[faces[f][(c + 1) % 3]], points[faces[f][c]])
-                convex = 1 if dot(cross(nf, ng), along) >= 0 else 0
-                lines.add((f, c, convex))
-                lines.add((g, d, convex))
+            if dot(nf, ng) < math.cos(math.radians(angle)):
+                sharp.add(key)
+    for key in cleaned_up(sharp, border, points):
+        (f, c), (g, d) = sides[key]
+        nf, ng = face_normal(points, faces[f]), face_normal(points, faces[g])
+        along = sub(points[faces[f][(c + 1) % 3]], points[faces[f][c]])
+        convex = 1 if dot(cross(nf, ng), along) >= 0 else 0
+        lines.add((f, c, convex))
+        lines.add((g, d, convex))
     return lines
 
 
@@ -123,13 +159,14 @@ def check_directional_files(name, prefix, points, faces, n, data):
     bad_edges = 0
     for e in range(ne):
         f, g, a, b, jump = map(int, m[3 + 5 * e:8 + 5 * e])
-        if a not in faces[f] or faces[f][(faces[f].index(a) + 1) % 3] != b:
+        if a not in faces[f] or faces[f][(faces[f].index(a) + 1) % 3] != b or not 0 <= jump < n:
             bad_edges += 1
         if g < 0:
             continue
         turns[b] = turns.get(b, 0) + jump  # from f to g is counter-clockwise about b
         turns[a] = turns.get(a, 0) - jump
-    check(bad_edges == 0, "%s: %d edges do not run from a to b in their first face" % (name, bad_edges))
+    check(bad_edges == 0, "%s: %d edges do not run from a to b in their first face or have a matching outside "
+                          "0 ... n - 1" % (name, bad_edges))
     border = {v for key, s in sides_of_edges(faces).items() if len(s) == 1 for v in key}
     bad = [v for v in turns if v not in border and (turns[v] - index.get(v, 0)) % n != 0]
     check(not bad, "%s: the matching around %d interior vertices does not close to their index" % (name, len(bad)))

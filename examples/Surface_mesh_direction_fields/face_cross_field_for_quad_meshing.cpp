@@ -3,7 +3,6 @@
 // .rosy and .sharp files QuadWild loads beside the mesh.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include <fstream>
@@ -28,7 +27,7 @@ int main(int argc, char* argv[])
 
   // the sharp edges: one direction of the cross follows them
   auto is_feature = mesh.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
-  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 35., is_feature);
+  SMDF::detect_feature_edges(mesh, 35., is_feature);
 
   auto direction = mesh.add_property_map<Mesh::Face_index, Kernel::Vector_3>("f:direction").first;
   auto matching = mesh.add_property_map<Mesh::Edge_index, int>("e:matching", 0).first;

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_face_directions.h>

@@ -20,8 +20,9 @@ def _keywords(*, degree: int = 4, s: float = 0.0, align: Optional[str] = None,
               curvature_estimate: str = "quadric-fit", guidance: Any = None, lambda_t: Optional[float] = None,
               alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False, constraints: Any = None,
               boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
-              prescribed: Any = None, prescribed_loop_turns: Any = None, intrinsic_mollification: float = 1e-6,
-              normals: Any = None, max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
+              feature_cleanup: int = 4, prescribed: Any = None, prescribed_loop_turns: Any = None,
+              intrinsic_mollification: float = 1e-6, normals: Any = None, max_iterations: int = 1000,
+              tolerance: float = 1e-10, seed: int = 0,
               progress: Optional[Callable[[float], None]] = None) -> None:
     """The keyword arguments of a computation, with the defaults the C++ side applies."""
 
@@ -59,8 +60,8 @@ class DirectionField(_core.DirectionField):
 def _face_keywords(*, degree: int = 4, align: Optional[str] = None, guidance: Any = None,
                    lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, constraints: Any = None,
                    boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
-                   prescribed: Any = None, intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
-                   tolerance: float = 1e-10, seed: int = 0) -> None:
+                   feature_cleanup: int = 4, prescribed: Any = None, intrinsic_mollification: float = 1e-6,
+                   max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0) -> None:
     """The keyword arguments of a field on faces, with the defaults the C++ side applies."""
 
 
@@ -77,3 +78,5 @@ compute_globally_optimal_directions.__signature__ = _signature("V", "F")  # type
 DirectionField.compute.__doc__ = _core._compute_doc
 DirectionField.compute.__signature__ = _signature("self")  # type: ignore[attr-defined]
 __doc__ = _core.__doc__
+# the names used above are not the package's: dir() lists only its own
+del Any, Callable, Optional, Tuple, inspect

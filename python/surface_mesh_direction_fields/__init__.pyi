@@ -20,6 +20,7 @@ class Result:
     singular_faces: npt.NDArray[np.int64]    # (k, 2): face, k (index k / n)
     loop_turns: npt.NDArray[np.int64]        # (m, 2): loop, turns (give back as prescribed_loop_turns)
     eigenvalues: List[float]                 # per component
+    solves: List[str]                        # per component: 'eigen-solve', 'linear solve' or 'parallel section'
     normals: npt.NDArray[np.float64]         # (|V|, 3) unit normals the directions turn about
     tangent_frames: npt.NDArray[np.float64]  # (|V|, 2, 3): e1 along the reference edge, e2 = normal x e1
     @property
@@ -48,7 +49,7 @@ def compute_globally_optimal_directions(
     curvature_estimate: str = "quadric-fit", guidance: Optional[npt.ArrayLike] = None,
     lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False,
     constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
-    feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
+    feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None, feature_cleanup: int = 4,
     prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
     intrinsic_mollification: float = 1e-6, normals: Optional[npt.ArrayLike] = None, max_iterations: int = 1000,
     tolerance: float = 1e-10, seed: int = 0, progress: Optional[Callable[[float], None]] = None) -> Result: ...
@@ -60,7 +61,7 @@ class DirectionField:
         curvature_estimate: str = "quadric-fit", guidance: Optional[npt.ArrayLike] = None,
         lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None, eigenvalue_bound: bool = False,
         constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None, boundary: Optional[str] = None,
-        feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None,
+        feature_edges: Optional[npt.ArrayLike] = None, feature_angle: Optional[float] = None, feature_cleanup: int = 4,
         prescribed: Optional[npt.ArrayLike] = None, prescribed_loop_turns: Optional[npt.ArrayLike] = None,
         intrinsic_mollification: float = 1e-6, normals: Optional[npt.ArrayLike] = None,
         max_iterations: int = 1000, tolerance: float = 1e-10, seed: int = 0,
@@ -85,6 +86,8 @@ class FaceField:
     @property
     def eigenvalues(self) -> List[float]: ...
     @property
+    def solves(self) -> List[str]: ...
+    @property
     def boundary_indices(self) -> List[int]: ...
     @property
     def euler_characteristics(self) -> List[int]: ...
@@ -98,7 +101,7 @@ def compute_face_directions(
     guidance: Optional[npt.ArrayLike] = None, lambda_t: Optional[float] = None,
     alignment_weight: Optional[float] = None, constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None,
     boundary: Optional[str] = None, feature_edges: Optional[npt.ArrayLike] = None,
-    feature_angle: Optional[float] = None, prescribed: Optional[npt.ArrayLike] = None,
+    feature_angle: Optional[float] = None, feature_cleanup: int = 4, prescribed: Optional[npt.ArrayLike] = None,
     intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
     tolerance: float = 1e-10, seed: int = 0) -> FaceField: ...
 

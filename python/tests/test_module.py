@@ -201,12 +201,17 @@ def test_face_field_prescribed_vertices():
     assert np.array_equal(np.sort(back.singular_vertices, axis=0), np.sort(smooth.singular_vertices, axis=0))
     singular = set(smooth.singular_vertices[:, 0].tolist())
     a, b = next((a, b) for a, b in zip(F[:, 0], F[:, 1]) if a not in singular and b not in singular)
-    for k in (1, 12):  # 12: more than a half turn across the edge, so not the principal matching
+    for k in (1, 8):  # 8: the power field turns by more than pi across the edge, so not the principal matching
         asked = np.vstack([smooth.singular_vertices, [[a, k], [b, -k]]])
         r = smdf.compute_face_directions(V, F, degree=4, prescribed=asked)
         assert np.array_equal(np.sort(r.singular_vertices, axis=0), np.sort(asked, axis=0))
-        assert (r.non_principal_jumps > 0) == (k == 12)
+        assert (r.non_principal_jumps > 0) == (k == 8)
         assert matching_closes(r, V, F, 4)
+    # 12: each direction would turn by half a turn or more across some edge, which no direction with a
+    # matching can show (a reader takes each direction's turn in (-pi, pi])
+    with pytest.raises(smdf.InvalidInputError, match="half a turn"):
+        smdf.compute_face_directions(V, F, degree=4, prescribed=np.vstack([smooth.singular_vertices,
+                                                                           [[a, 12], [b, -12]]]))
     with pytest.raises(smdf.InvalidInputError, match="Poincare-Hopf"):
         smdf.compute_face_directions(V, F, degree=4, prescribed=[[0, 1]])
     with pytest.raises(ValueError, match="vertex 99999"):
@@ -245,9 +250,13 @@ def test_calls_fail_in_a_python_way():
 
 def test_a_field_that_did_not_converge_warns():
     V, F = sphere()
-    with pytest.warns(RuntimeWarning, match=r"did not converge in 1 iterations"):
+    with pytest.warns(RuntimeWarning, match=r"did not converge in 1 iterations") as caught:
         r = smdf.compute_globally_optimal_directions(V, F, degree=4, max_iterations=1)
     assert not r.converged and repr(r).endswith(", not converged>")
+    assert caught[0].filename == __file__  # the warning points at the caller's line
+    with pytest.warns(RuntimeWarning) as caught:
+        smdf.DirectionField(V, F).compute(degree=4, max_iterations=1)
+    assert caught[0].filename == __file__
     import warnings
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -596,8 +605,10 @@ def test_read_mesh_repairs_and_refuses(tmp_path):
         bad.write_text(text)
         with pytest.raises(ValueError):
             smdf.read_mesh(str(bad))
-    with pytest.raises(ValueError):
+    with pytest.raises(FileNotFoundError):  # as open() raises it
         smdf.read_mesh(str(tmp_path / "missing.off"))
+    with pytest.raises(IsADirectoryError):
+        smdf.read_mesh(str(tmp_path))
 
 
 def test_random_arrays_never_crash():

@@ -67,8 +67,7 @@ def test_results_pickle_and_copy():
                 elif not callable(a):
                     assert repr(a) == repr(b), name  # exact, nan included
     deep = copy.deepcopy(r)
-    deep.directions[0] = 0.  # a deep copy owns its arrays
-    assert np.any(r.directions[0] != 0.)
+    assert not np.shares_memory(deep.directions, r.directions)  # a deep copy owns its arrays
     back = pickle.loads(pickle.dumps(r))
     assert back.index_sum == 0 and back.timings == r.timings and np.array_equal(back.all_directions, r.all_directions)
     with pytest.raises(RuntimeError):  # a state this module did not write
@@ -130,3 +129,93 @@ def test_default_degree_is_four_everywhere(program, tmp_path):
                   "".join(f"3 {a} {b} {c}\n" for a, b, c in F))
     ran = subprocess.run([program, str(mesh), "--json", "--quiet"], capture_output=True, text=True, check=True)
     assert json.loads(ran.stdout)["degree"] == 4
+
+
+def test_result_arrays_are_read_only():
+    # all_directions is made from directions and normals, copies share arrays: none can change another
+    V, F = torus()
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    face = smdf.compute_face_directions(V, F, degree=4)
+    for result in (r, face, copy.copy(r), pickle.loads(pickle.dumps(face))):
+        for name in dir(result):
+            a = getattr(result, name) if not name.startswith("_") else None
+            if isinstance(a, np.ndarray) and name != "all_directions":
+                assert not a.flags.writeable, name
+                with pytest.raises(ValueError):
+                    a[(0,) * a.ndim] = 42
+    assert np.array_equal(r.all_directions[:, 0], r.directions)
+
+
+def crafted(result, position, value):
+    """The pickled state of `result` with entry `position` replaced by `value`."""
+    state = list(result.__getstate__())
+    state[position] = value
+    return tuple(state)
+
+
+def test_crafted_pickles_are_refused():
+    V, F = torus()
+    r = smdf.compute_globally_optimal_directions(V, F, degree=4)
+    nv = len(V)
+    # directions, magnitudes, coefficients, normals, tangent_frames, singular_faces, loop_turns: each
+    # replaced by an array that disagrees with the others (the crash and the uninitialised memory of before)
+    for position, bad in [(0, np.zeros((1000, 3))), (0, np.zeros((nv, 2))), (1, np.zeros(nv + 1)),
+                          (2, np.zeros(1, dtype=complex)), (3, np.zeros((1, 3))), (4, np.zeros((nv, 3, 2))),
+                          (5, np.zeros((3, 3), dtype=np.int64)), (6, np.zeros(4, dtype=np.int64)),
+                          (7, [0.0, 1.0])]:
+        restored = smdf.Result.__new__(smdf.Result)
+        with pytest.raises(ValueError):
+            restored.__setstate__(crafted(r, position, bad))
+    # a degree of 0 or a million in the report
+    for degree in (0, 10 ** 6):
+        report = list(r.__getstate__()[8])
+        report[0] = degree
+        restored = smdf.Result.__new__(smdf.Result)
+        with pytest.raises(ValueError):
+            restored.__setstate__(crafted(r, 8, tuple(report)))
+    face = smdf.compute_face_directions(V, F, degree=4)
+    for position, bad in [(0, np.zeros((5, 3))), (1, np.zeros((len(F), 4))), (2, np.zeros(3, dtype=np.int64)),
+                          (3, np.zeros((len(F) + 1, 3), dtype=np.int64)), (4, np.zeros((2, 3), dtype=np.int64))]:
+        restored = smdf.FaceField.__new__(smdf.FaceField)
+        with pytest.raises(ValueError):
+            restored.__setstate__(crafted(face, position, bad))
+
+
+def test_a_progress_callback_cannot_call_back_into_its_object():
+    V, F = torus()
+    field = smdf.DirectionField(V, F)
+    for reenter in (lambda: field.construction_ms, lambda: field.compute(degree=2), lambda: field.matrices()):
+        def progress(fraction, reenter=reenter):
+            reenter()
+        with pytest.raises(RuntimeError, match="busy"):
+            field.compute(degree=4, progress=progress)
+    assert field.compute(degree=4).converged  # the object is usable after
+
+
+def test_one_degree_limit_and_strict_types():
+    V, F = torus()
+    assert smdf.compute_globally_optimal_directions(V, F, degree=1000).degree == 1000
+    for bad in (0, 1001, 10 ** 6):
+        with pytest.raises(ValueError, match="from 1 to 1000"):
+            smdf.compute_globally_optimal_directions(V, F, degree=bad)
+        with pytest.raises(ValueError, match="from 1 to 1000"):
+            smdf.compute_face_directions(V, F, degree=bad)
+    field = smdf.DirectionField(V, F)
+    for bad in (True, 4.0, "4"):
+        with pytest.raises(TypeError):
+            smdf.compute_globally_optimal_directions(V, F, degree=bad)
+        with pytest.raises(TypeError):
+            field.matrices(degree=bad)
+    for bad_V in (V.astype(complex), V > 0, V.astype(object)):
+        with pytest.raises(TypeError, match="V must be"):
+            smdf.compute_globally_optimal_directions(bad_V, F)
+    big = F.astype(np.uint64)
+    big[0, 0] = np.iinfo(np.uint64).max
+    with pytest.raises(ValueError, match="2\\^63"):
+        smdf.compute_globally_optimal_directions(V, big)
+
+
+def test_the_package_lists_only_its_own_names():
+    assert not {"Any", "Callable", "Optional", "Tuple", "inspect"} & set(dir(smdf))
+    assert {"compute_globally_optimal_directions", "DirectionField", "compute_face_directions", "read_mesh"} <= \
+        set(dir(smdf))

@@ -26,6 +26,7 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <iterator>
@@ -357,6 +358,80 @@ static double feature_direction_error(const Mesh& mesh, const Directions& d, con
   return worst;
 }
 
+// The cleanup of detect_feature_edges() on graphs of known shape (steps
+// 4): an open chain of 8 edges goes and one of 9 stays whole, a branch of 4
+// from a loop goes and one of 5 stays, a closed loop stays, a chain that
+// ends on the boundary goes when it has at most 4 edges, and a long edge stays.
+static void check_feature_cleanup(Test_report& report)
+{
+  using SMDF::internal::erode_and_dilate_features;
+  struct Graph
+  {
+    std::vector<std::array<std::size_t, 2> > ends;
+    std::size_t next = 0;
+    std::size_t path(std::size_t from, std::size_t edges)  // a path of new vertices from `from`; its last vertex
+    {
+      std::size_t at = from;
+      for(std::size_t i = 0; i < edges; ++i) { ends.push_back({at, next}); at = next++; }
+      return at;
+    }
+  };
+  auto kept_after = [](Graph& g, std::vector<unsigned char> border, std::vector<unsigned char> is_long) {
+    border.resize(g.next, 0);
+    is_long.resize(g.ends.size(), 0);
+    std::vector<unsigned char> marked(g.ends.size(), 1);
+    erode_and_dilate_features(g.ends, border, is_long, 4, marked);
+    return static_cast<std::size_t>(std::count(marked.begin(), marked.end(), 1));
+  };
+  for(std::size_t length : {8, 9})
+  {
+    Graph g;
+    g.path(g.next++, length);
+    report.check(kept_after(g, {}, {}) == (length == 8 ? 0 : 9), "an open chain of " + std::to_string(length) + " edges " +
+                                                                      (length == 8 ? "is dropped" : "stays whole"));
+  }
+  for(std::size_t branch : {4, 5})
+  {
+    Graph g;
+    const std::size_t first = g.next++;
+    g.ends.push_back({g.path(first, 9), first});  // a loop of 10 edges
+    g.path(first, branch);
+    report.check(kept_after(g, {}, {}) == (branch == 4 ? 10 : 15),
+                 "a branch of " + std::to_string(branch) + " from a loop " + (branch == 4 ? "is dropped" : "stays"));
+  }
+  for(std::size_t length : {4, 5})
+  {
+    Graph g;
+    const std::size_t on_boundary = g.next++;
+    g.path(on_boundary, length);
+    std::vector<unsigned char> border(g.next, 0);
+    border[on_boundary] = 1;
+    report.check(kept_after(g, border, {}) == (length == 4 ? 0 : 5),
+                 "a chain of " + std::to_string(length) + " from the boundary " + (length == 4 ? "is dropped" : "stays"));
+  }
+  Graph lone;
+  lone.path(lone.next++, 1);
+  report.check(kept_after(lone, {}, {1}) == 1, "a long edge alone stays");
+  report.check(kept_after(lone, {}, {0}) == 0, "a short edge alone is dropped");
+  // on a mesh: a box keeps its 12 edges (corners are junctions), at any scale
+  std::size_t unscaled = 0;
+  for(double scale : {1., 1e300, 1e-300})
+  {
+    Mesh box;
+    make_box(box, 2. * scale, 1.5 * scale, scale, 12);
+    auto is_feature = box.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+    const std::size_t marked = SMDF::detect_feature_edges(box, 60., is_feature);
+    std::size_t sharp = 0;
+    auto pmp = box.add_property_map<Mesh::Edge_index, bool>("e:pmp", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(box, 60., pmp);
+    for(auto e : box.edges()) sharp += pmp[e] && is_feature[e];
+    if(scale == 1.) unscaled = marked;
+    report.check(marked > 0 && marked == unscaled && (scale != 1. || marked == sharp),
+                 "a box scaled by " + std::to_string(scale) + ": " + std::to_string(marked) + " feature edges" +
+                   (scale == 1. ? ", those of detect_sharp_edges()" : ", as unscaled"));
+  }
+}
+
 // Sharp features: on a capped cylinder, a box and fandisk (CGAL's
 // detect_sharp_edges at 60 degrees), every vertex inside a feature polyline
 // has a direction within 1 degree of the feature, with the smoothest and
@@ -570,6 +645,7 @@ int main()
   check_ellipsoid_umbilics(report);
   check_one_factorization(report);
   check_features(report);
+  check_feature_cleanup(report);
   check_constraints(report);
   check_errors(report);
   check_class_after_a_refused_call(report);

@@ -330,12 +330,21 @@ void check_prescriptions_on_spheres()
     // all of the index on one vertex, and a pair the principal matching cannot read
     check_shows(sphere, n, {{Vertex_index(0), 2 * n}}, name + ", all of the index at one vertex", false);
     Vertex_indices strong = smooth.singular;
-    strong.emplace_back(ab.first, 3 * n);
-    strong.emplace_back(ab.second, -3 * n);
+    strong.emplace_back(ab.first, 2 * n);
+    strong.emplace_back(ab.second, -2 * n);
+    // (for n = 1 a direction turning by half a turn or more is refused, so every jump is principal)
     const Face_field field = prescribed_field(sphere, n, strong);
-    report.check(field.result.number_of_non_principal_jumps > 0,
-                 name + ": indices +-3n side by side need jumps the principal matching does not read");
-    check_shows(sphere, n, strong, name + ", indices +-3n side by side", false);
+    report.check((n == 1) == (field.result.number_of_non_principal_jumps == 0),
+                 name + ": indices +-2n side by side need jumps the principal matching does not read (n > 1)");
+    check_shows(sphere, n, strong, name + ", indices +-2n side by side", n == 1);
+    // +-3n side by side: each direction would turn by half a turn or more across an edge of their fans
+    Vertex_indices too_strong = smooth.singular;
+    too_strong.emplace_back(ab.first, 3 * n);
+    too_strong.emplace_back(ab.second, -3 * n);
+    bool thrown = false;
+    try { prescribed_field(sphere, n, too_strong); }
+    catch(const SMDF::Invalid_input_error& e) { thrown = std::string(e.what()).find("half a turn") != std::string::npos; }
+    report.check(thrown, name + ": indices +-3n side by side are refused (no direction with a matching shows them)");
   }
 }
 

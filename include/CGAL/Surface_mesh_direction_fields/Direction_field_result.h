@@ -24,11 +24,13 @@ namespace Surface_mesh_direction_fields {
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
-the largest degree `n` the functions of this package accept (one million):
-the integer index `k` of a face is at most about `3n/2`, so it and the sums of
-`k` stay exact in the integer types of the results.
+the largest degree `n` the functions of this package, the command-line program
+and the Python module accept (one thousand). The files and pictures hold `n`
+directions per element, and beyond a few hundred directions most faces of a
+common mesh are singular anyway; the integer indices `k` and their sums stay
+far inside the integer types of the results.
 */
-constexpr int maximum_degree = 1000000;
+constexpr int maximum_degree = 1000;
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRef
 /// The degree `n` when the named parameter `degree` is not given: 4, a cross field, the field quad meshers
@@ -38,11 +40,27 @@ constexpr int default_degree = 4;
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
+What gave a component its field (`Component_report::solve`,
+`Face_field_component_report::solve`).
+*/
+enum class Field_solve
+{
+  EIGEN_SOLVE,      ///< the smoothest field: the smallest eigenvector of \f$ A u = \lambda M u \f$
+  LINEAR_SOLVE,     ///< an aligned or constrained field: \f$ (A - \lambda_t M) u = M q \f$ (the eigenvalue
+                    ///< is computed beside it only where it is needed or asked for)
+  PARALLEL_SECTION  ///< prescribed singularities: the parallel section of the changed connection (no eigenvalue)
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
 What the solve found on one connected component of the mesh (components are
 numbered in the order of their smallest vertex index).
 */
 struct Component_report
 {
+  /// what gave the component its field
+  Field_solve solve = Field_solve::EIGEN_SOLVE;
   /// number of vertices of the component
   std::size_t number_of_vertices = 0;
   /// number of faces of the component
@@ -157,6 +175,8 @@ What the solve of a field on faces found on one connected component
 */
 struct Face_field_component_report
 {
+  /// what gave the component its field
+  Field_solve solve = Field_solve::EIGEN_SOLVE;
   /// number of vertices of the component
   std::size_t number_of_vertices = 0;
   /// number of faces of the component (the unknowns of its problem)

@@ -155,10 +155,9 @@ private:
       if(!signed_directions || i % 8 != 4 || i >= l.faces.size()) continue;  // every few faces along the line
       const internal::Vec3 e = l.points[i + 1] - l.points[i];
       const auto& t = data.faces[l.faces[i]];
-      const internal::Vec3 normal =
-        internal::cross(data.points[t[1]] - data.points[t[0]], data.points[t[2]] - data.points[t[0]]);
+      const internal::Vec3 normal = internal::triangle_unit_normal(data.points, t);
       if(internal::norm(e) > 0. && internal::norm(normal) > 0.)
-        add_arrowhead(l.points[i + 1], internal::normalized(e), internal::normalized(normal), 1.2 * glyph, color);
+        add_arrowhead(l.points[i + 1], internal::normalized(e), normal, 1.2 * glyph, color);
     }
   }
 

@@ -70,8 +70,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
   \cgalParamNBegin{degree}
     \cgalParamDescription{the degree `n` of the field: 1 for a vector (direction) field,
                           2 for a line field, 4 for a cross field; any `n` from 1 to
-                          `maximum_degree` (one million: the integer index `k` of a face,
-                          at most about `3n/2`, and the sums of `k` stay exact)}
+                          `maximum_degree` (one thousand, as in the program and the Python module)}
     \cgalParamType{`int`}
     \cgalParamDefault{`default_degree`, 4: a cross field}
   \cgalParamNEnd
@@ -153,7 +152,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
   \cgalParamNBegin{edge_is_feature_map}
      \cgalParamDescription{sharp features: inside a feature polyline one of the `n` directions follows it (a hard
                            constraint); corners and the ends of open polylines stay free. Requires an even `n`;
-                           `CGAL::Polygon_mesh_processing::detect_sharp_edges()` fills such a map}
+                           `detect_feature_edges()` fills such a map at any scale of the coordinates}
      \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
                     as key type and `bool` as value type}
      \cgalParamDefault{no feature}

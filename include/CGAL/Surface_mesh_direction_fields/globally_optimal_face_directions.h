@@ -400,7 +400,10 @@ interior vertices that satisfy Poincare-Hopf are shown exactly.
                           boundary loop by the multiple of \f$ 2\pi / n \f$ nearest the surface's own (user
                           manual, section \ref SMDF_faces). Where the field must turn by \f$ \pi / n \f$ or more
                           across an edge, the matching written to `edge_matching_map` is not the principal one
-                          (`Face_direction_field_result::number_of_non_principal_jumps` counts those edges)}
+                          (`Face_direction_field_result::number_of_non_principal_jumps` counts those edges);
+                          where each direction would have to turn by half a turn or more across some edge (an
+                          index too large for the edges around its vertex), which no direction with a matching
+                          can show, `Invalid_input_error` is thrown}
     \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%vertex_descriptor, int>`, as
                    `singularities_output_iterator` writes them}
     \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}

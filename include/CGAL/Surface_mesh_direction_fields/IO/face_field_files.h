@@ -156,9 +156,12 @@ inline void write_vertex_singularities(std::ostream& os, const Direction_field_d
 writes the matching of a field on faces as a Directional matching file (`.matching`, read by
 `directional::read_matching()`): `n`, the number of edges and of faces; per edge `f g a b m`: its face `f`
 where it runs from vertex `a` to `b`, the face `g` on its other side (`-1` on the boundary) and the
-matching `m`: direction `j` of `f`, transported to `g`, is direction `j + m` (modulo `n`) of `g`; then per
-face its three edges (edge `c` from `faces[f][c]` to `faces[f][(c+1)%3]`). The edges are numbered in the
-order of their first side in the faces.
+matching `m`, from 0 to `n - 1`: direction `j` of `f`, transported to `g`, is direction `(j + m) mod n` of
+`g` (the range and the sense of Directional's `principal_matching()`, which gives the same `m` wherever
+the field turns by less than `pi / n` across the edge; vcglib's `MissMatchByCross(f, g)` is
+`(n - m) mod n`, and the period jump of `Face_direction_field_result`'s `edge_matching_map` is `-m`
+modulo `n`); then per face its three edges (edge `c` from `faces[f][c]` to `faces[f][(c+1)%3]`). The
+edges are numbered in the order of their first side in the faces.
 
 \param os the output stream
 \param data the field (`faces`, `degree`, `face_matching`)
@@ -179,7 +182,9 @@ inline void write_matching(std::ostream& os, const Direction_field_data& data)
         edge_of[key] = edges.size();
         face_edges[f][c] = edges.size();
         // the period jump p from f turns its first direction p times: direction j of f is direction j - p of g
-        const long long m = data.face_matching.empty() ? 0 : -static_cast<long long>(data.face_matching[f][c]);
+        const long long n = data.degree;
+        const long long p = data.face_matching.empty() ? 0 : static_cast<long long>(data.face_matching[f][c]);
+        const long long m = ((-p % n) + n) % n;
         edges.push_back({static_cast<long long>(f), -1, static_cast<long long>(a), static_cast<long long>(b), m});
       }
       else

@@ -82,12 +82,32 @@ inline Vec3 normalized(const Vec3& a)
   return l > 0. ? (1. / l) * a : a;
 }
 
+// a x b scaled by a power of two: the sides are first brought to a largest
+// coordinate in [0.5, 1), so that the product neither overflows (sides near
+// 1e155) nor underflows (near 1e-160). A power of two keeps every bit, so
+// its direction is that of the plain product wherever that one is finite.
+inline Vec3 scaled_cross(const Vec3& a, const Vec3& b)
+{
+  double largest = 0.;
+  for(int i = 0; i < 3; ++i) largest = (std::max)(largest, (std::max)(std::abs(a[i]), std::abs(b[i])));
+  if(!(largest > 0.) || !std::isfinite(largest)) return cross(a, b);
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const Vec3 sa{std::ldexp(a[0], -exponent), std::ldexp(a[1], -exponent), std::ldexp(a[2], -exponent)};
+  const Vec3 sb{std::ldexp(b[0], -exponent), std::ldexp(b[1], -exponent), std::ldexp(b[2], -exponent)};
+  return cross(sa, sb);
+}
+
 // The unit normal of the triangle t of `points`, counter-clockwise (zero for a
-// degenerate triangle).
+// degenerate triangle), at any scale of the coordinates.
+inline Vec3 triangle_unit_normal(const Vec3& p0, const Vec3& p1, const Vec3& p2)
+{
+  return normalized(scaled_cross(p1 - p0, p2 - p0));
+}
 template <typename Triangle>
 Vec3 triangle_unit_normal(const std::vector<Vec3>& points, const Triangle& t)
 {
-  return normalized(cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]]));
+  return triangle_unit_normal(points[t[0]], points[t[1]], points[t[2]]);
 }
 
 template <typename Triangle>

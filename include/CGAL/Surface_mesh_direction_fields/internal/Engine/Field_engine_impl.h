@@ -238,6 +238,7 @@ private:
     {
       describe_component(m_geometry.mesh, m_geometry.components.list[c], result.components[c]);
       result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
+      result.components[c].solve = Field_solve::PARALLEL_SECTION;
       result.components[c].converged = true;
     }
     std::vector<Complex> u = m_prescribed.field(request, connection, result);

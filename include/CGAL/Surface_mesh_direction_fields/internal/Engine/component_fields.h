@@ -75,6 +75,7 @@ public:
       smoothest || targets.alignment.eigenvalue_bound ||
       (aligned && (targets.alignment.weight_given || !m_systems.certifies_definiteness(c)));
     report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
+    report.solve = smoothest ? Field_solve::EIGEN_SOLVE : Field_solve::LINEAR_SOLVE;
     Complex_vector u;
     if(needs_eigenvalue) u = smallest_eigenvector(c, report, !smoothest);
     if(!smoothest) u = aligned_field(c, Mq, aligned, constraints, targets.alignment, report);

@@ -196,6 +196,7 @@ private:
     {
       describe(m_components.list[c], result.components[c]);
       result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
+      result.components[c].solve = Field_solve::PARALLEL_SECTION;
       result.components[c].converged = true;
     }
     check_face_prescription(request, result.components);
@@ -212,7 +213,13 @@ private:
     Face_connection_change& change = *m_change;
     const Dual_trees& trees = change.trees();
     result.timings.setup_ms = milliseconds_since(start) - result.timings.factorization_ms;
-    const Eigen::VectorXd delta = change.solve(request.prescribed_index, request.degree);
+    Eigen::VectorXd delta;
+    if(!change.solve(request.prescribed_index, request.degree, delta))
+      throw Invalid_input_error("prescribed_singularities asks the field to turn by half a turn or more across "
+                                "an edge (indices too large for the valence of their vertices, or too close "
+                                "together): no direction per face with a matching can show it; spread the "
+                                "singularities out");
+
     std::vector<double> theta = change.parallel_angles(delta);
     turn_towards_guidance(request, theta);
     progress.reached(1.);
@@ -336,6 +343,7 @@ private:
     const bool aligned = q_norm > 0., constrained = !constraints.empty();
     if(aligned) Mq /= q_norm;
     report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
+    report.solve = aligned || constrained ? Field_solve::LINEAR_SOLVE : Field_solve::EIGEN_SOLVE;
     report.converged = true;
     auto eigen_solve = [&] {
       Factored_matrix<SparseSolver> factored(solver);

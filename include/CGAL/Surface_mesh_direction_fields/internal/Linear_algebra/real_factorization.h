@@ -60,17 +60,38 @@ class Factored_real_matrix
   std::unique_ptr<Simplicial_solver> m_simplicial_solver;
   Eigen::Index m_size = 0;
 
-  template <typename Solver>
-  static std::unique_ptr<Solver> factored(const Real_sparse_matrix& S)
+  static void check_factored(const Eigen::ComputationInfo info)
   {
-    auto solver = std::make_unique<Solver>();
-    solver->compute(S);
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-    if constexpr(!std::is_same<Solver, Simplicial_solver>::value)
-      if(solver->cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
-#endif
-    if(solver->info() != Eigen::Success)
+    if(info != Eigen::Success)
       throw Solver_failure_error("the sparse solver could not factor the Laplacian of the connection change");
+  }
+
+  static std::unique_ptr<Simplicial_solver> factored_without_blas(const Real_sparse_matrix& S)
+  {
+    auto solver = std::make_unique<Simplicial_solver>(S);
+    check_factored(solver->info());
+    return solver;
+  }
+
+  // CHOLMOD allocates the factor before the BLAS takes its work buffers:
+  // the analysis tells the factor's size (lnz entries, which the supernodes'
+  // padding can take up to about one and a half times), and the BLAS is
+  // called only where the address space leaves room for both (null
+  // otherwise).
+  static std::unique_ptr<Blas_solver> factored_with_blas(const Real_sparse_matrix& S)
+  {
+    auto solver = std::make_unique<Blas_solver>();
+    solver->analyzePattern(S);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+    if(solver->cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+    const double factor_bytes = 2. * sizeof(double) * solver->cholmod().lnz;
+    if(!(factor_bytes < 1e18) || !blas_work_space_available(static_cast<std::size_t>(factor_bytes))) return nullptr;
+#endif
+    solver->factorize(S);
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
+    if(solver->cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+#endif
+    check_factored(solver->info());
     return solver;
   }
 
@@ -90,14 +111,13 @@ public:
     m_blas_solver.reset();
     m_simplicial_solver.reset();
     if(m_size == 0) return;
-    if(std::is_same<Blas_solver, Simplicial_solver>::value || !blas_work_space_available())
+    if(!std::is_same<Blas_solver, Simplicial_solver>::value && blas_work_space_available())
     {
-      m_simplicial_solver = factored<Simplicial_solver>(S);
-      return;
+      // CHOLMOD's analysis may call METIS (ordering_lock.h)
+      std::scoped_lock exclusive(blas_factorization_lock(), metis_ordering_lock());
+      m_blas_solver = factored_with_blas(S);
     }
-    // CHOLMOD's analysis may call METIS (ordering_lock.h)
-    std::scoped_lock exclusive(blas_factorization_lock(), metis_ordering_lock());
-    m_blas_solver = factored<Blas_solver>(S);
+    if(!m_blas_solver) m_simplicial_solver = factored_without_blas(S);
   }
 
   // CHOLMOD's solve calls the BLAS too: under the same lock, so that its

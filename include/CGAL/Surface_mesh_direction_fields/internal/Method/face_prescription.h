@@ -40,10 +40,13 @@
 // one in the norm sum_e w_e delta_e^2 (the L2 norm of a dual 1-form) removes
 // that gradient with one solve of the weighted Laplacian of the faces.
 // The field is the parallel section of n rho + delta. Its matching is read
-// from delta, not rounded from the directions, so every delta is shown,
-// even one of pi or more across an edge (two opposite singularities side by
-// side); the construction first tries to bring every delta below pi, so
-// that readers who recompute the principal matching find the same vertices.
+// from delta, not rounded from the directions. The construction first tries
+// to bring every delta below pi, so that readers who recompute the principal
+// matching find the same vertices; where that cannot be (two opposite
+// singularities side by side, an index of 2 or more), below n pi, so that
+// each direction turns by less than half a turn across every edge and
+// readers of the directions with the matching find the same vertices.
+// Where that cannot be either, no file can carry the field (solve() says so).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -322,15 +325,14 @@ class Face_connection_change
     });
   }
 
-  // Where some |delta_e| is pi or more, a phi on the faces with
-  // |delta_e + phi_g - phi_f| <= pi - margin on every edge solves a system
-  // of difference constraints: shortest paths from a virtual source joined
-  // to every face at length 0 (Bellman-Ford, queued). When none exists some
-  // cycle keeps lowering phi; the work is bounded and delta is kept (the
-  // matching then carries the jumps that principal matching would misread).
-  void fit_below_half_turn(Eigen::VectorXd& delta) const
+  // Where some |delta_e| is more than `bound`, a phi on the faces with
+  // |delta_e + phi_g - phi_f| <= bound on every edge solves a system of
+  // difference constraints: shortest paths from a virtual source joined to
+  // every face at length 0 (Bellman-Ford, queued). When none exists some
+  // cycle keeps lowering phi; the work is bounded, delta is kept and the
+  // answer is false.
+  bool fit_below(double bound, Eigen::VectorXd& delta) const
   {
-    const double bound = CGAL_PI - 1e-9;
     std::vector<double> phi(m_mesh.number_of_faces(), 0.);
     std::vector<unsigned char> queued(phi.size(), 0);
     std::deque<std::size_t> queue;
@@ -359,12 +361,13 @@ class Face_connection_change
         if(!queued[twin / 3]) { queued[twin / 3] = 1; queue.push_back(twin / 3); }
       }
     }
-    if(!queue.empty()) return;
+    if(!queue.empty()) return false;
     for(std::size_t e = 0; e < m_trees.edges.number_of_edges(); ++e)
     {
       const std::size_t side = m_trees.edges.corner_of_edge[e], twin = m_mesh.twin_corner[side];
       if(twin != no_index) delta[static_cast<Eigen::Index>(e)] += phi[twin / 3] - phi[side / 3];
     }
+    return true;
   }
 
 public:
@@ -378,14 +381,19 @@ public:
   const Dual_trees& trees() const { return m_trees; }
 
   // The change for degree n; parallel_angles() then uses the same degree.
-  Eigen::VectorXd solve(const std::vector<int>& k, int n)
+  // False where some |delta_e| stays n pi or more: a direction then turns
+  // by half a turn or more across that edge, which no direction and
+  // matching can show.
+  bool solve(const std::vector<int>& k, int n, Eigen::VectorXd& delta)
   {
     m_degree = n;
     cache_degree_terms();
-    Eigen::VectorXd delta = particular_change(k);
+    delta = particular_change(k);
     remove_dual_gradient(delta);
-    if(delta.size() > 0 && delta.cwiseAbs().maxCoeff() >= CGAL_PI - 1e-9) fit_below_half_turn(delta);
-    return delta;
+    const double principal = CGAL_PI - 1e-9, half_turn = n * (CGAL_PI - 1e-6);
+    const double largest = delta.size() > 0 ? delta.cwiseAbs().maxCoeff() : 0.;
+    if(largest <= principal || fit_below(principal, delta)) return true;
+    return largest <= half_turn || fit_below(half_turn, delta);
   }
 
   // The angle of the n-th power per face: the parallel section of
