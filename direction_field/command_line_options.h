@@ -48,7 +48,7 @@ struct Options
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
   bool distribute_from_given = false;
   unsigned int distribute_from = 50000;  // --distribute-from: the smallest component spread over the processes
-  std::string huge_pages = "on";  // --huge-pages: malloc's transparent huge pages (huge_pages_rerun.h)
+  std::string huge_pages = "auto";  // --huge-pages: malloc's transparent huge pages (huge_pages_rerun.h)
 };
 
 // The largest degree the program accepts: the library's.
@@ -133,12 +133,13 @@ inline const Option_help option_help[] = {
                                          "the processes, smaller ones solved by the first (default 50000)"},
   {"Performance", "--petsc-options TEXT", "PETSc's own options for --solver petsc, as one argument "
                                          "(say \"-mat_mumps_icntl_14 50 -log_view\")"},
-  {"Performance", "--huge-pages on|off", "on (default): the program runs itself again with glibc's malloc asking "
-                                        "for transparent huge pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), "
-                                        "which saves most of the page faults of a large mesh; only for mesh "
-                                        "files of 4 MB or more, not when GLIBC_TUNABLES is set, under mpirun or "
-                                        "under a memory limit. The results are the same; the JSON's huge_pages "
-                                        "says which ran"},
+  {"Performance", "--huge-pages auto|on|off", "on: the program runs itself again with glibc's malloc asking "
+                                             "for transparent huge pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), "
+                                             "which saves most of the page faults of a large mesh; only for mesh "
+                                             "files of 4 MB or more, not when GLIBC_TUNABLES is set, under mpirun or "
+                                             "under a memory limit. auto (default): the same where a page fault "
+                                             "costs more than 5 us (measured at start on 8 MB), where huge pages "
+                                             "pay. The results are the same; the JSON's huge_pages says which ran"},
   {"Program", "--help, -h", "this text"},
   {"Program", "--version", "the program's version"},
 };
@@ -157,7 +158,7 @@ inline const char* const usage =
   "                       [--matching FILE]\n"
   "                       [--solver default|petsc]"
   " [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
-  "                       [--huge-pages on|off]\n"
+  "                       [--huge-pages auto|on|off]\n"
   "                       [--help] [--version]\n";
 
 inline void print_help(std::ostream& os)
@@ -335,8 +336,8 @@ inline void check_options(const Options& o)
     throw Usage_error("--curvature-estimate expects quadric-fit or hopf, got '" + o.curvature_estimate + "'");
   if(o.solver != "default" && o.solver != "petsc")
     throw Usage_error("--solver expects default or petsc, got '" + o.solver + "'");
-  if(o.huge_pages != "on" && o.huge_pages != "off")
-    throw Usage_error("--huge-pages expects on or off, got '" + o.huge_pages + "'");
+  if(o.huge_pages != "auto" && o.huge_pages != "on" && o.huge_pages != "off")
+    throw Usage_error("--huge-pages expects auto, on or off, got '" + o.huge_pages + "'");
   if(!o.petsc_options.empty() && o.solver != "petsc") throw Usage_error("--petsc-options needs --solver petsc");
   if(o.distribute_from_given && o.solver != "petsc") throw Usage_error("--distribute-from needs --solver petsc");
 #ifndef SMDF_WITH_PETSC

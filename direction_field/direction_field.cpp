@@ -578,7 +578,7 @@ static int run(int argc, char** argv)
   try
   {
     const Options o = parse_options(argc, argv, [] { return CGAL::data_file_path("meshes/fandisk.off"); });
-    if(o.huge_pages == "on" && launcher_rank() == nullptr) rerun_with_huge_pages(argv, o.mesh);
+    if(o.huge_pages != "off" && launcher_rank() == nullptr) rerun_with_huge_pages(argv, o.mesh, o.huge_pages);
     Processes processes(o);
     if(!processes.writes())
     {

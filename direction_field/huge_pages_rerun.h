@@ -1,10 +1,10 @@
 // The program's memory pages (--huge-pages, direction_field/README.md).
 //
 // Most of a large run's memory is written once, fresh from the kernel, and on
-// virtual machines a page fault is expensive: on the 2-core machines of the
-// benchmark (benchmark/.../README.md, "Huge pages for the program") the faults
-// of 4 KB pages took a fifth of the wall time of a field at 400k and 1.6M
-// faces. glibc (2.35 or later) gives transparent huge pages to every large
+// some virtual machines a page fault is expensive (benchmark/.../README.md,
+// "Huge pages for the program"); on others huge pages cost more than they
+// save, so --huge-pages auto first measures. glibc (2.35 or later) gives
+// transparent huge pages to every large
 // allocation of a process started with GLIBC_TUNABLES=glibc.malloc.hugetlb=1,
 // a setting it reads only at start: so the program runs itself again with
 // it. A library must not choose its process's allocator; the program is the
@@ -12,6 +12,8 @@
 #ifndef SMDF_DIRECTION_FIELD_HUGE_PAGES_RERUN_H
 #define SMDF_DIRECTION_FIELD_HUGE_PAGES_RERUN_H
 
+#include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -21,6 +23,7 @@
 
 #if defined(__linux__) && defined(__GLIBC__)
 #include <sys/auxv.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -112,7 +115,35 @@ constexpr long long huge_pages_smallest_file = 4LL << 20;
 // owns the processes' environment; the caller knows its variables). Nor in
 // secure mode, nor where /proc/self/exe is not the program (started through
 // the dynamic loader). Goes on as it is if the rerun fails.
-inline void rerun_with_huge_pages(char** argv, const std::string& mesh_file)
+#if defined(__linux__) && defined(__GLIBC__)
+// The time, in nanoseconds, of the first touch of a fresh 4 KB page (a page
+// fault), over 8 MB of anonymous memory kept from huge pages. Whether huge
+// pages pay depends on it: where faults are expensive they save most of a
+// large run's fault time, where they are cheap the huge pages' own first
+// touch costs more than it saves (the hosts measured: benchmark README,
+// "The program against its earlier builds").
+inline double page_fault_ns()
+{
+  const std::size_t bytes = std::size_t(8) << 20;
+  void* memory = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if(memory == MAP_FAILED) return 0.;
+  madvise(memory, bytes, MADV_NOHUGEPAGE);
+  volatile char* pages = static_cast<volatile char*>(memory);
+  const auto start = std::chrono::steady_clock::now();
+  for(std::size_t i = 0; i < bytes; i += 4096) pages[i] = 1;
+  const double elapsed = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+  munmap(memory, bytes);
+  return elapsed / static_cast<double>(bytes / 4096);
+}
+#endif
+
+// Above this cost of a page fault (--huge-pages auto) the program reruns
+// with huge pages: between the costs of the hosts measured.
+constexpr double huge_pages_fault_ns = 5000.;
+
+// `when`: "on" reruns wherever the conditions below allow, "auto" only
+// where a page fault is expensive (page_fault_ns()).
+inline void rerun_with_huge_pages(char** argv, const std::string& mesh_file, const std::string& when)
 {
 #if defined(__linux__) && defined(__GLIBC__)
   if(std::getenv("GLIBC_TUNABLES") != nullptr || secure_mode()) return;
@@ -124,12 +155,14 @@ inline void rerun_with_huge_pages(char** argv, const std::string& mesh_file)
   std::string setting;
   if(!std::getline(mode, setting) || setting.find("[never]") != std::string::npos) return;
   if(!executable_is_this_program()) return;
+  if(when == "auto" && !(page_fault_ns() > huge_pages_fault_ns)) return;
   if(setenv("GLIBC_TUNABLES", huge_pages_tunable, 1) != 0) return;
   execv("/proc/self/exe", argv);
   unsetenv("GLIBC_TUNABLES");  // the rerun failed: go on with the kernel's default pages
 #else
   (void)argv;
   (void)mesh_file;
+  (void)when;
 #endif
 }
 

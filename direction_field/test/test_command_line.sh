@@ -478,7 +478,7 @@ bad "t outside (0, 1)" "$out/octahedron.off" --align curvature --alignment-weigh
 bad "lambda above lambda_1" "$out/octahedron.off" --guidance "$out/guidance6.txt" --lambda 1e9
 bad "guidance of the wrong size" "$out/octahedron.off" --guidance "$out/sing4.txt"
 bad "unwritable output" "$out/octahedron.off" --directions "$out/no/such/dir/d.txt"
-bad "huge pages neither on nor off" "$out/octahedron.off" --huge-pages maybe
+bad "huge pages neither auto, on nor off" "$out/octahedron.off" --huge-pages maybe
 bad "features with odd n" "$out/octahedron.off" --degree 3 --feature-angle 60
 bad "feature angle out of range" "$out/octahedron.off" --feature-angle 200
 bad "unknown curvature estimate" "$out/octahedron.off" --align curvature --curvature-estimate guess
@@ -571,8 +571,12 @@ grep -q '\[never\]' /sys/kernel/mm/transparent_hugepage/enabled 2> /dev/null && 
 test -r /sys/kernel/mm/transparent_hugepage/enabled || huge_expected=false
 [ "$(ulimit -v)" = unlimited ] || huge_expected=false  # no rerun under an address-space limit
 huge_of() { python3 -c 'import json, sys; print(str(json.load(open(sys.argv[1]))["huge_pages"]).lower())' "$1"; }
-env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --directions "$out/grid_on.txt" > "$out/grid_on.json"
+env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --huge-pages on --directions "$out/grid_on.txt" > "$out/grid_on.json"
 check "grid, huge pages: exit 0" test $? -eq 0
+# auto (the default): huge pages only where a page fault is expensive; the same directions either way
+env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --directions "$out/grid_auto.txt" > "$out/grid_auto.json"
+check "grid, --huge-pages auto: exit 0" test $? -eq 0
+check "grid, --huge-pages auto: the same directions" cmp -s "$out/grid_auto.txt" "$out/grid_on.txt"
 env -u GLIBC_TUNABLES "$bin" "$out/grid.off" --json --huge-pages off --directions "$out/grid_off.txt" > "$out/grid_off.json"
 check "grid, --huge-pages off: exit 0" test $? -eq 0
 check "grid file of 4 MB or more" test "$(stat -c %s "$out/grid.off")" -ge 4194304
@@ -592,7 +596,8 @@ check "GLIBC_TUNABLES glibc.malloc.hugetlb=1: huge_pages true" test "$(huge_of "
 # started through the dynamic loader, /proc/self/exe is the loader: no rerun, the same directions
 loader=$(ldd "$bin" | awk '/ld-linux/ {print $1}' | head -n 1)
 if [ -x "$loader" ]; then
-  env -u GLIBC_TUNABLES "$loader" "$bin" "$out/grid.off" --json --directions "$out/grid_loader.txt" > "$out/grid_loader.json"
+  env -u GLIBC_TUNABLES "$loader" "$bin" "$out/grid.off" --json --huge-pages on --directions "$out/grid_loader.txt" \
+    > "$out/grid_loader.json"
   check "grid started through the dynamic loader ($loader): exit 0" test $? -eq 0
   check "grid through the loader: huge_pages false (no rerun)" test "$(huge_of "$out/grid_loader.json")" = false
   check "grid through the loader: the same directions" cmp -s "$out/grid_loader.txt" "$out/grid_off.txt"

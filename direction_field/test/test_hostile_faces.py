@@ -288,4 +288,30 @@ if os.geteuid() == 0 and os.access(BIN, os.X_OK):
 else:
     print("the process limit is not checked: not root, or the program is not executable")
 
+# ---------------------------------------------------------------- no huge-pages rerun in secure mode
+# A setuid copy of the program started by another user runs in glibc's secure mode, where glibc ignores
+# (newer glibc removes) GLIBC_TUNABLES: a rerun would run again and again. It must not rerun at all.
+if os.geteuid() == 0:
+    k = 400
+    grid_points = [(i / (k - 1), j / (k - 1), 0.1 * math.sin(3.0 * i / k) * math.cos(2.0 * j / k + i / k))
+                   for j in range(k) for i in range(k)]
+    grid_faces = []
+    for j in range(k - 1):
+        for i in range(k - 1):
+            a = j * k + i
+            grid_faces += [(a, a + 1, a + k + 1), (a, a + k + 1, a + k)]
+    big = write_off("grid_4mb.off", grid_points, grid_faces)
+    os.chmod(big, 0o644)
+    setuid_copy = os.path.join(OUT, "direction_field_setuid")
+    shutil.copy(BIN, setuid_copy)
+    os.chmod(setuid_copy, 0o4755)
+    env = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
+    try:
+        r = subprocess.run([setuid_copy, big, "--json", "--huge-pages", "on"], capture_output=True, text=True,
+                           timeout=120, env=env, preexec_fn=as_nobody_with_process_limit(1000))
+        check(os.path.getsize(big) >= 4 << 20 and r.returncode == 0 and json.loads(r.stdout)["huge_pages"] is False,
+              "secure mode: no rerun, the field (%d %r)" % (r.returncode, r.stderr[-200:]))
+    except subprocess.TimeoutExpired:
+        check(False, "secure mode: the program does not end")
+
 check.finish()

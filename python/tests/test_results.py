@@ -219,3 +219,14 @@ def test_the_package_lists_only_its_own_names():
     assert not {"Any", "Callable", "Optional", "Tuple", "inspect"} & set(dir(smdf))
     assert {"compute_globally_optimal_directions", "DirectionField", "compute_face_directions", "read_mesh"} <= \
         set(dir(smdf))
+
+
+@pytest.mark.parametrize("scale", [1e300, 1e155, 1e-200, 1e-300])
+def test_face_fields_at_any_scale(scale):
+    # the directions and pd2 unit and finite, and the same singular vertices, at coordinates near 1e+-300
+    V, F = torus()
+    plain = smdf.compute_face_directions(V, F, degree=4)
+    r = smdf.compute_face_directions(V * scale, F, degree=4)
+    for a in (r.face_directions, r.pd2):
+        assert np.all(np.isfinite(a)) and np.allclose(np.linalg.norm(a, axis=1), 1, atol=1e-12)
+    assert np.array_equal(np.sort(r.singular_vertices, axis=0), np.sort(plain.singular_vertices, axis=0))

@@ -82,15 +82,17 @@ inline Vec3 normalized(const Vec3& a)
   return l > 0. ? (1. / l) * a : a;
 }
 
-// a x b scaled by a power of two: the sides are first brought to a largest
-// coordinate in [0.5, 1), so that the product neither overflows (sides near
-// 1e155) nor underflows (near 1e-160). A power of two keeps every bit, so
-// its direction is that of the plain product wherever that one is finite.
+// a x b, scaled by a power of two where the sides' largest coordinate lies
+// beyond 2^+-200: they are first brought to a largest coordinate in
+// [0.5, 1), so that the product neither overflows (sides near 1e155) nor
+// underflows (near 1e-160). A power of two keeps every bit, so its direction
+// is that of the plain product wherever that one is finite; sides of
+// ordinary size take the plain product (no scaling to pay for).
 inline Vec3 scaled_cross(const Vec3& a, const Vec3& b)
 {
   double largest = 0.;
   for(int i = 0; i < 3; ++i) largest = (std::max)(largest, (std::max)(std::abs(a[i]), std::abs(b[i])));
-  if(!(largest > 0.) || !std::isfinite(largest)) return cross(a, b);
+  if(!(largest > 0.) || !std::isfinite(largest) || (largest >= 0x1p-200 && largest <= 0x1p200)) return cross(a, b);
   int exponent = 0;
   std::frexp(largest, &exponent);
   const Vec3 sa{std::ldexp(a[0], -exponent), std::ldexp(a[1], -exponent), std::ldexp(a[2], -exponent)};
