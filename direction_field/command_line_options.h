@@ -9,15 +9,18 @@
 
 #include "file_io/messages.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #ifndef SMDF_VERSION
 #define SMDF_VERSION "1.0"
@@ -358,6 +361,53 @@ inline void check_options(const Options& o)
                       std::to_string(o.degree));
 }
 
+// The number of single-character edits from a to b (Levenshtein).
+inline std::size_t edit_distance(const std::string& a, const std::string& b)
+{
+  std::vector<std::size_t> row(b.size() + 1);
+  for(std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for(std::size_t i = 1; i <= a.size(); ++i)
+  {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for(std::size_t j = 1; j <= b.size(); ++j)
+    {
+      const std::size_t above = row[j];
+      row[j] = (std::min)({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The name of the option an entry of the help describes ("--degree" of "--degree N").
+inline std::string option_name(const Option_help& h)
+{
+  const std::string text = h.option;
+  return text.substr(0, text.find_first_of(" ,"));
+}
+
+// "unknown option --degre (did you mean --degree? see --help)": the option of
+// the help within two edits, if any.
+inline std::string unknown_option(const std::string& given)
+{
+  std::string nearest;
+  std::size_t best = 3;
+  for(const Option_help& h : option_help)
+  {
+    const std::string name = option_name(h);
+    const std::size_t d = name.compare(0, 2, "--") == 0 ? edit_distance(given, name) : best;
+    if(d < best) { best = d; nearest = name; }
+  }
+  return "unknown option " + given + (nearest.empty() ? " (see --help)" : " (did you mean " + nearest + "? see --help)");
+}
+
+inline bool is_known_option(const std::string& given)
+{
+  return std::any_of(std::begin(option_help), std::end(option_help),
+                     [&](const Option_help& h) { return option_name(h) == given; });
+}
+
 // `default_mesh()` is called when no MESH is given.
 template <typename DefaultMesh>
 Options parse_options(int argc, char** argv, const DefaultMesh& default_mesh)
@@ -374,11 +424,11 @@ Options parse_options(int argc, char** argv, const DefaultMesh& default_mesh)
     else if(a == "--eigenvalue-bound") o.eigenvalue_bound = true;
     else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
     {
-      if(i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
-      if(!parse_valued_option(o, a, argv[i + 1])) throw Usage_error("unknown option " + a + " (see --help)");
+      if(i + 1 >= argc) throw Usage_error(is_known_option(a) ? "option " + a + " expects a value" : unknown_option(a));
+      if(!parse_valued_option(o, a, argv[i + 1])) throw Usage_error(unknown_option(a));
       ++i;
     }
-    else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error("unknown option " + a + " (see --help)");
+    else if(!a.empty() && a[0] == '-' && a != "-") throw Usage_error(unknown_option(a));
     else if(mesh_given) throw Usage_error("more than one mesh given ('" + o.mesh + "' and '" + a + "')");
     else if(a.empty()) throw Usage_error("the mesh file name is empty");
     else { o.mesh = a; mesh_given = true; }

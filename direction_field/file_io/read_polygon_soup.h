@@ -89,12 +89,21 @@ constexpr std::size_t largest_piped_file = std::size_t(1) << 32;
 // How long a named pipe may stay without a writer before it is refused.
 constexpr int pipe_wait_seconds = 30;
 
+// Why `path` could not be opened, from errno as the failing call left it
+// ("cannot open 'x.off': No such file or directory").
+inline std::string cannot_open(const std::string& path)
+{
+  if(path.empty()) return "cannot open '': the file name is empty";
+  const int error = errno;
+  return "cannot open '" + path + "'" + (error != 0 ? std::string(": ") + std::strerror(error) : std::string());
+}
+
 // Opens the pipe `path` without blocking, then waits for its writer (at most
 // pipe_wait_seconds): a pipe nobody writes is an error, not a hang.
 inline int open_pipe(const std::string& path, const std::string& what)
 {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if(fd < 0) throw Mesh_input_error("cannot open '" + path + "'");
+  if(fd < 0) throw Mesh_input_error(cannot_open(path));
   pollfd ready{fd, POLLIN, 0};
   int polled;
   do polled = ::poll(&ready, 1, 1000 * pipe_wait_seconds);
@@ -141,13 +150,14 @@ inline std::string read_pipe(const std::string& path, const std::string& what)
 inline std::string read_whole_file(const std::string& path, const std::string& what = "a mesh file")
 {
   struct stat status;
-  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
+  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error(cannot_open(path));
   if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not " + what);
   if(!S_ISREG(status.st_mode) && !S_ISFIFO(status.st_mode))
     throw Mesh_input_error("'" + path + "' is a device or a socket, not " + what);
   if(S_ISFIFO(status.st_mode)) return read_pipe(path, what);
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if(!in) throw Mesh_input_error("cannot open '" + path + "'");
+  if(!in) throw Mesh_input_error(cannot_open(path));
   std::string bytes(static_cast<std::size_t>(status.st_size), '\0');
   in.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
   if(in.gcount() != static_cast<std::streamsize>(bytes.size())) throw Mesh_input_error("cannot read '" + path + "'");
@@ -325,7 +335,7 @@ inline Polygon_soup read_polygon_soup(const std::string& path)
 {
   namespace sr = soup_reading;
   struct stat status;
-  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error("cannot open '" + path + "'");
+  if(path.empty() || ::stat(path.c_str(), &status) != 0) throw Mesh_input_error(sr::cannot_open(path));
   if(S_ISDIR(status.st_mode)) throw Mesh_input_error("'" + path + "' is a directory, not a mesh file");
   const std::string extension = sr::lower_case_extension(path);
   if(extension != "off" && extension != "obj" && extension != "ply" && extension != "stl")

@@ -464,10 +464,16 @@ bad() {  # bad DESCRIPTION ARGS...
   echo "  $what -> $(cat "$out/bad.err")"
 }
 bad "missing file" "$out/does_not_exist.off"
+check "missing file: the reason" grep -q "does_not_exist.off': No such file or directory" "$out/bad.err"
 bad "degree 0" "$out/octahedron.off" --degree 0
 bad "degree not a number" "$out/octahedron.off" --degree four
 bad "s outside [-1, 1]" "$out/octahedron.off" --s 1.5
 bad "unknown option" "$out/octahedron.off" --frobnicate
+check "unknown option: no suggestion when nothing is near" grep -q "unknown option --frobnicate (see --help)" "$out/bad.err"
+bad "a misspelt option" "$out/octahedron.off" --degre 4
+check "a misspelt option: the nearest suggested" grep -q "did you mean --degree?" "$out/bad.err"
+check "--version: the package's version" \
+      test "$("$bin" --version)" = "direction_field $(sed -n 's/^project(Surface_mesh_direction_fields VERSION \([0-9.]*\).*/\1/p' "$(dirname "$0")/../../CMakeLists.txt")"
 bad "truncated file" "$out/truncated.off"
 bad "NaN coordinate" "$out/nan.off"
 bad "two meshes" "$out/octahedron.off" "$out/octahedron.off"
