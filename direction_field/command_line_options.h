@@ -47,6 +47,7 @@ struct Options
   std::string curvature_estimate = "quadric-fit";
   double feature_angle = -1.;  // negative: no feature alignment
   unsigned int feature_cleanup = 4;  // --feature-cleanup: steps of erosion and growth of the sharp chains
+  double cancel_singularities = 0.;   // --cancel-singularities: the radius, a fraction of the bounding box's diagonal
   std::string solver = "default";
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
   bool distribute_from_given = false;
@@ -76,7 +77,7 @@ inline const Option_help option_help[] = {
   {"Field", "--on WHERE", "vertices (default): one direction per vertex, singularities in faces; or faces: one "
                          "direction per face, singularities at vertices, a matching per edge (what quad meshers "
                          "read; s must be 0; outputs --rosy, --ffield, --sharp, --rawfield, --sing, --matching, "
-                         "--singularities, --mesh-out, --json)"},
+                         "--singularities, --vtk, --vtk-singularities, --streamlines, --png, --mesh-out, --json)"},
   {"Field", "--seed N", "the seed of the random start vector of the eigen-solve (default 0)"},
   {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
   {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
@@ -88,6 +89,12 @@ inline const Option_help option_help[] = {
                                   "the k must add up to n times the Euler characteristic. With --on faces: one 'v k' per "
                                   "singular interior vertex, numbered as --mesh-out and --singularities number them; "
                                   "any k that satisfy Poincare-Hopf are shown, with --matching"},
+  {"Field", "--cancel-singularities D", "with --on faces: fewer singularities, for quad meshes with fewer irregular "
+                                        "vertices: pairs of singular vertices of opposite index at most D apart "
+                                        "along the edges (D a fraction of the bounding box's diagonal, e.g. 0.1) "
+                                        "are removed, and the field is the parallel one with the others (not with "
+                                        "--feature-angle, --constrain-boundary, --lambda, --alignment-weight, "
+                                        "--prescribe; default 0: none removed)"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
                                 "follow the principal curvature directions (even n)"},
   {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
@@ -109,7 +116,8 @@ inline const Option_help option_help[] = {
   {"Outputs", "--json-file FILE", "the same line of JSON in FILE"},
   {"Outputs", "--png FILE", "a picture: the shaded mesh from four sides, the field, the singularities, a legend"},
   {"Outputs", "--vtk FILE", "the field for ParaView: .vtk (legacy) or .vtu (XML; both read by VTK and meshio): "
-                            "the mesh, its n directions per vertex, the singular triangles marked"},
+                            "the mesh, its n directions per vertex, the singular triangles marked (with --on faces: per "
+                            "face, the singular vertices marked)"},
   {"Outputs", "--vtk-singularities FILE", "the singularities as small markers coloured by index, to open beside "
                                           "--vtk's file (.vtk or .vtu)"},
   {"Outputs", "--ply FILE", "PLY with per-vertex direction and magnitude, per-face singularity"},
@@ -154,6 +162,7 @@ inline const char* const usage =
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG] [--feature-cleanup N]\n"
+  "                       [--cancel-singularities D]\n"
   "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
   "                       [--singularity-list FILE]"
   " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
@@ -279,6 +288,12 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
     o.feature_cleanup = parse_count(a, v);
     if(o.feature_cleanup > 1000) throw Usage_error("--feature-cleanup expects an integer from 0 to 1000, got " + v);
   }
+  else if(a == "--cancel-singularities")
+  {
+    o.cancel_singularities = parse_number<double>(a, v);
+    if(!(o.cancel_singularities >= 0. && o.cancel_singularities <= 10.))
+      throw Usage_error("--cancel-singularities expects a fraction of the bounding box's diagonal from 0 to 10, got " + v);
+  }
   else if(a == "--solver") o.solver = v;
   else if(a == "--on") o.on = v;
   else if(a == "--petsc-options") o.petsc_options = v;
@@ -311,17 +326,21 @@ inline void check_field_location_options(const Options& o)
     for(const auto& f : face_files)
       if(!f.second->empty())
         throw Usage_error(std::string(f.first) + " writes a field on faces with its matching: add --on faces");
+    if(o.cancel_singularities > 0.) throw Usage_error("--cancel-singularities applies to fields on faces: add --on faces");
     return;
   }
   const std::pair<const char*, const std::string*> vertex_outputs[] = {
-    {"--directions", &o.directions}, {"--png", &o.png}, {"--vtk", &o.vtk},
-    {"--vtk-singularities", &o.vtk_singularities}, {"--ply", &o.ply}, {"--singularity-list", &o.singularity_list},
-    {"--streamlines", &o.streamlines}, {"--guidance", &o.guidance}};
+    {"--directions", &o.directions}, {"--ply", &o.ply}, {"--singularity-list", &o.singularity_list},
+    {"--guidance", &o.guidance}};
   for(const auto& f : vertex_outputs)
     if(!f.second->empty()) throw Usage_error(std::string(f.first) + " applies to fields on vertices, not to --on faces");
   if(o.s != 0.) throw Usage_error("--on faces has the Dirichlet energy only: --s must be 0");
   if(o.solver != "default") throw Usage_error("--on faces runs on one process: no --solver " + o.solver);
   if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound applies to fields on vertices");
+  if(o.cancel_singularities > 0. && (o.feature_angle > 0. || o.constrain_boundary != "none" || o.lambda_given ||
+                                     o.weight_given || !o.prescribe.empty()))
+    throw Usage_error("--cancel-singularities does not apply with --feature-angle, --constrain-boundary, --lambda, "
+                      "--alignment-weight or --prescribe (the field it leads to turns only as a whole)");
 }
 
 // The values that are words, and the combinations of options.

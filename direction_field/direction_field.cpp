@@ -541,14 +541,16 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
   progress.begin("writing", timings.write);
   if(!o.mesh_out.empty()) exchange_files::write_mesh(o.mesh_out, outputs.stream(o.mesh_out), input.mesh);
   face_field_run::write_files(o, field, outputs);
+  const std::vector<SMDF::Streamline> lines = face_field_run::write_streamlines(o, field, outputs);
+  if(!o.png.empty()) face_field_run::write_picture(o, field, lines, outputs);
   outputs.close_all_except(o.json_file);
   progress.end();
   if(!o.json_file.empty())
   {
-    face_field_run::write_json(outputs.stream(o.json_file), o, input, field, timings);
+    face_field_run::write_json(outputs.stream(o.json_file), o, input, field, outputs, timings);
     outputs.close(o.json_file);
   }
-  if(o.json) face_field_run::write_json(std::cout, o, input, field, timings);
+  if(o.json) face_field_run::write_json(std::cout, o, input, field, outputs, timings);
   else face_field_run::write_summary(std::cout, o, input, field);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");

@@ -1,12 +1,15 @@
 // --on faces: the field on the faces of the repaired mesh, with its singular
-// vertices and its matching, and the files quad meshers read (.rosy, .ffield,
-// .sharp) and Directional reads (.rawfield, .sing, .matching).
+// vertices and its matching, the files quad meshers read (.rosy, .ffield,
+// .sharp) and Directional reads (.rawfield, .sing, .matching), and those of
+// viewers (--vtk, --vtk-singularities, --streamlines, --png).
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_FACE_FIELD_RUN_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_FACE_FIELD_RUN_H
 
 #include "command_line_options.h"
+#include "exchange_files.h"
 #include "file_io/output_files.h"
 #include "file_io/read_and_repair_mesh.h"
+#include "png_snapshot.h"
 #include "reports.h"
 
 #include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
@@ -82,10 +85,8 @@ template <typename Mesh>
 Face_field compute(const Options& o, const Mesh& mesh,
                    const std::vector<std::pair<typename Mesh::Vertex_index, int> >* prescription)
 {
-  typedef typename Mesh::Face_index Face_index;
   typedef typename Mesh::Vertex_index Vertex_index;
   Face_field field;
-  field.data = field_data(mesh, o.degree);
   std::vector<unsigned char> is_feature;
   field.features = feature_edges(o, mesh, is_feature);
   std::vector<typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3> directions(mesh.number_of_faces());
@@ -99,7 +100,8 @@ Face_field compute(const Options& o, const Mesh& mesh,
               .boundary_alignment(boundary_alignment(o))
               .edge_is_feature_map(CGAL::make_property_map(is_feature))
               .singularities_output_iterator(std::back_inserter(singular))
-              .edge_matching_map(CGAL::make_property_map(matching));
+              .edge_matching_map(CGAL::make_property_map(matching))
+              .singularity_cancellation_radius(o.cancel_singularities);
   auto direction_map = CGAL::make_property_map(directions);
   if(prescription)
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map,
@@ -110,23 +112,8 @@ Face_field compute(const Options& o, const Mesh& mesh,
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np.alignment_lambda(o.lambda));
   else
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map, np);
-  for(Face_index f : mesh.faces())
-    field.data.face_directions.push_back({directions[f].x(), directions[f].y(), directions[f].z()});
-  for(const auto& vk : singular) field.data.vertex_singularities.emplace_back(std::size_t(vk.first), vk.second);
-  // per face side: the jump from this face, so the stored one (from the face of halfedge(e)) or its negative
-  field.data.face_matching.assign(mesh.number_of_faces(), {0, 0, 0});
-  for(Face_index f : mesh.faces())
-  {
-    for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
-    {
-      // side c of data.faces[f] starts at the source of h (vertices_around_face() starts at a target)
-      const std::array<std::size_t, 3>& t = field.data.faces[f];
-      const int c = t[0] == std::size_t(mesh.source(h)) ? 0 : t[1] == std::size_t(mesh.source(h)) ? 1 : 2;
-      const auto e = mesh.edge(h);
-      const typename Mesh::Edge_index listed(static_cast<typename Mesh::size_type>(std::size_t(e)));
-      field.data.face_matching[f][c] = mesh.halfedge(listed) == h ? matching[e] : -matching[e];
-    }
-  }
+  field.data = SMDF::make_face_direction_field_data(mesh, direction_map, field.result, singular,
+                                                    CGAL::parameters::edge_matching_map(CGAL::make_property_map(matching)));
   return field;
 }
 
@@ -144,6 +131,47 @@ inline void write_files(const Options& o, const Face_field& field, Output_files&
     for(const auto& vk : field.data.vertex_singularities) os << vk.first << " " << vk.second << "\n";
   }
   if(!o.sharp.empty()) SMDF::IO::write_sharp(outputs.stream(o.sharp), field.data, field.features);
+  if(!o.vtk.empty())
+  {
+    if(soup_reading::lower_case_extension(o.vtk) == "vtu") SMDF::IO::write_VTU(outputs.stream(o.vtk), field.data);
+    else SMDF::IO::write_VTK(outputs.stream(o.vtk), field.data);
+  }
+  // as for vertex fields (exchange_files.h): no .vtu without a point, meshio reads none
+  const bool vtu_markers = soup_reading::lower_case_extension(o.vtk_singularities) == "vtu";
+  if(!o.vtk_singularities.empty() && vtu_markers && field.data.vertex_singularities.empty())
+    outputs.leave_out(o.vtk_singularities);
+  else if(!o.vtk_singularities.empty())
+  {
+    if(vtu_markers) SMDF::IO::write_VTU_singularities(outputs.stream(o.vtk_singularities), field.data);
+    else SMDF::IO::write_VTK_singularities(outputs.stream(o.vtk_singularities), field.data);
+  }
+}
+
+// --streamlines, and the lines --png draws: traced on the per-face field itself.
+inline std::vector<SMDF::Streamline> write_streamlines(const Options& o, const Face_field& field, Output_files& outputs)
+{
+  if(o.streamlines.empty()) return std::vector<SMDF::Streamline>();
+  std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(field.data);
+  if(lines.empty() && soup_reading::lower_case_extension(o.streamlines) == "vtu") outputs.leave_out(o.streamlines);
+  else exchange_files::write_streamlines(o.streamlines, outputs.stream(o.streamlines), lines, field.data.degree);
+  return lines;
+}
+
+// --png: the shaded mesh, the directions at the faces' centres (or the field
+// lines), the singular vertices.
+inline void write_picture(const Options& o, const Face_field& field, const std::vector<SMDF::Streamline>& lines,
+                          Output_files& outputs)
+{
+  png_snapshot::Scene scene;
+  scene.degree = field.data.degree;
+  scene.points = field.data.points;
+  scene.triangles = field.data.faces;
+  scene.directions = field.data.face_directions;
+  scene.directions_on_faces = true;
+  scene.vertex_index.assign(field.data.points.size(), 0);
+  for(const auto& vk : field.data.vertex_singularities) scene.vertex_index[vk.first] = vk.second;
+  for(const SMDF::Streamline& l : lines) scene.polylines.push_back(l.points);
+  png_snapshot::render(scene, outputs.stream(o.png));
 }
 
 // The singular vertices whose k is a multiple of n (index +-1, +-2, ...): a
@@ -159,7 +187,7 @@ inline std::size_t hidden_modulo_n(const SMDF::Direction_field_data& data)
 // One line of JSON (the keys of direction_field/README.md, "--on faces").
 template <typename Mesh>
 void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& input, const Face_field& field,
-                const Program_timings& timings)
+                const Output_files& outputs, const Program_timings& timings)
 {
   const SMDF::Face_direction_field_result& r = field.result;
   long long chi = 0, boundary = 0;
@@ -180,6 +208,10 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"singular_vertices_multiple_of_n\":" << hidden_modulo_n(field.data)
      << ",\"prescribed\":" << (r.prescribed ? "true" : "false")
      << ",\"non_principal_jumps\":" << r.number_of_non_principal_jumps
+     << ",\"cancelled_pairs\":" << r.number_of_cancelled_pairs << ",\"outputs_left_out\":[";
+  const auto left_out = outputs.left_out();
+  for(std::size_t i = 0; i < left_out.size(); ++i) os << (i ? "," : "") << "\"" << left_out[i].first << "\"";
+  os << "]"
      << ",\"timings_ms\":{\"setup\":" << number(r.timings.setup_ms)
      << ",\"factorization\":" << number(r.timings.factorization_ms) << ",\"solve\":" << number(r.timings.solve_ms)
      << ",\"total\":" << number(r.timings.total_ms) << ",\"read\":" << number(timings.read)
@@ -204,7 +236,11 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
        << " (boundary " << c.boundary_index << "/" << r.degree << ", Euler characteristic " << c.euler_characteristic
        << ")\n";
   }
-  if(r.prescribed)
+  if(r.number_of_cancelled_pairs > 0)
+    os << "cancelled       " << r.number_of_cancelled_pairs << " pairs of opposite singular vertices within "
+       << o.cancel_singularities << " of the diagonal (parallel field with the others; "
+       << r.number_of_non_principal_jumps << " edges with a matching other than the principal one)\n";
+  else if(r.prescribed)
     os << "prescribed      the singular vertices of " << o.prescribe << " (parallel field; "
        << r.number_of_non_principal_jumps << " edges with a matching other than the principal one)\n";
   if(const std::size_t hidden = hidden_modulo_n(field.data))

@@ -1,7 +1,7 @@
 // A headless picture of a direction field: a small software rasterizer that
 // draws the shaded mesh from four sides, the field (its lines, or the n
-// directions at evenly spread vertices), the singular faces (red: positive
-// index, blue: negative) and a legend, and writes a PNG with no library
+// directions at evenly spread vertices or faces), the singular faces or
+// vertices (red: positive index, blue: negative) and a legend, and writes a PNG with no library
 // beyond the standard one (and zlib when the build found it). Used by the command-line program; not
 // part of the package's API.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PNG_SNAPSHOT_H
@@ -42,8 +42,10 @@ struct Scene
 {
   std::vector<V3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
-  std::vector<V3> directions;       // one unit tangent vector per vertex (zero: none)
+  std::vector<V3> directions;       // one unit tangent vector per vertex, or per face (zero: none)
+  bool directions_on_faces = false;  // a field on faces: directions per triangle, drawn at its centre
   std::vector<int> face_index;      // integer index k per face (0: regular)
+  std::vector<int> vertex_index;    // integer index k per vertex, for a field on faces (0: regular)
   std::vector<std::vector<V3> > polylines;  // streamlines; when given, drawn instead of the glyphs
   int degree = 1;
 };
@@ -311,15 +313,23 @@ inline void draw_chevron(Canvas& canvas, const V3& tip, const V3& along, double 
   canvas.line(tip, tip + (-size) * along + (-0.6 * size) * across, colour, 3.);
 }
 
-// The n directions at vertices spread over the view (one per screen cell,
-// the visible vertex closest to the camera).
-inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>& screen, double mean_edge,
-                        const std::vector<V3>& normals, Canvas& canvas)
+// Where the directions live (the vertices, or the triangles' centres for a
+// field on faces) and the normals about which they turn.
+struct Anchors
+{
+  std::vector<V3> points, normals;
+};
+
+// The n directions at anchors spread over the view (one per screen cell,
+// the visible anchor closest to the camera).
+inline void draw_glyphs(const Scene& s, const View& view, const Anchors& anchors, double mean_edge, Canvas& canvas)
 {
   const int cell = 12;
   const int cells = view.size / cell + 1;
+  std::vector<V3> screen(anchors.points.size());
+  for(std::size_t i = 0; i < screen.size(); ++i) screen[i] = view.project(anchors.points[i]);
   std::vector<long> chosen(static_cast<std::size_t>(cells * cells), -1);
-  for(std::size_t i = 0; i < s.points.size() && i < s.directions.size(); ++i)
+  for(std::size_t i = 0; i < anchors.points.size() && i < s.directions.size(); ++i)
   {
     const V3& p = screen[i];
     const int x = static_cast<int>(p[0]) - view.x0, y = static_cast<int>(p[1]) - view.y0;
@@ -333,12 +343,12 @@ inline void draw_glyphs(const Scene& s, const View& view, const std::vector<V3>&
   {
     if(ci < 0) continue;
     const std::size_t i = static_cast<std::size_t>(ci);
-    const V3 d = s.directions[i], e = cross(unit(normals[i]), d);
+    const V3 d = s.directions[i], e = cross(unit(anchors.normals[i]), d);
     for(int k = 0; k < s.degree; ++k)
     {
       const double a = 2. * 3.14159265358979323846 * k / s.degree;
       const V3 dk = std::cos(a) * d + std::sin(a) * e;
-      const V3 tip = view.project(s.points[i] + glyph * dk);
+      const V3 tip = view.project(anchors.points[i] + glyph * dk);
       canvas.line(screen[i], tip, {20, 20, 20}, 3.);
       const double length = std::hypot(tip[0] - screen[i][0], tip[1] - screen[i][1]);
       if(s.degree % 2 == 1 && length > 2.)  // odd n: the directions have a sign, an arrowhead shows it
@@ -365,9 +375,18 @@ inline void draw_arrowheads(const std::vector<V3>& polyline, const View& view, C
   }
 }
 
+// A disc in the index colour at a singularity, where it is seen.
+inline void draw_singularity(const V3& c, int k, const View& view, Canvas& canvas)
+{
+  const int x = static_cast<int>(c[0]), y = static_cast<int>(c[1]);
+  if(x < view.x0 || y < view.y0 || x >= view.x0 + view.size || y >= view.y0 + view.size) return;
+  if(c[2] + 2. < canvas.depth[static_cast<std::size_t>(y * canvas.w + x)]) return;
+  canvas.disc(c, 5., index_colour(k));
+}
+
 // One panel: the surface, the field (lines or glyphs), the singular faces
-// marked by discs so that they are seen even when smaller than a pixel.
-inline void draw_view(const Scene& s, const View& view, double mean_edge, const std::vector<V3>& normals, Canvas& canvas)
+// (or vertices) marked by discs so that they are seen even when smaller than a pixel.
+inline void draw_view(const Scene& s, const View& view, double mean_edge, const Anchors& anchors, Canvas& canvas)
 {
   std::vector<V3> screen(s.points.size());
   for(std::size_t i = 0; i < s.points.size(); ++i) screen[i] = view.project(s.points[i]);
@@ -378,17 +397,15 @@ inline void draw_view(const Scene& s, const View& view, double mean_edge, const 
       canvas.line(view.project(polyline[i]), view.project(polyline[i + 1]), {20, 60, 70}, 3.);
     if(s.degree % 2 == 1) draw_arrowheads(polyline, view, canvas);
   }
-  if(s.polylines.empty()) draw_glyphs(s, view, screen, mean_edge, normals, canvas);
+  if(s.polylines.empty()) draw_glyphs(s, view, anchors, mean_edge, canvas);
   for(std::size_t f = 0; f < s.triangles.size() && f < s.face_index.size(); ++f)
   {
     if(s.face_index[f] == 0) continue;
     const auto& t = s.triangles[f];
-    const V3 c = (1. / 3.) * (screen[t[0]] + screen[t[1]] + screen[t[2]]);
-    const int x = static_cast<int>(c[0]), y = static_cast<int>(c[1]);
-    if(x < view.x0 || y < view.y0 || x >= view.x0 + view.size || y >= view.y0 + view.size) continue;
-    if(c[2] + 2. < canvas.depth[static_cast<std::size_t>(y * canvas.w + x)]) continue;
-    canvas.disc(c, 5., index_colour(s.face_index[f]));
+    draw_singularity((1. / 3.) * (screen[t[0]] + screen[t[1]] + screen[t[2]]), s.face_index[f], view, canvas);
   }
+  for(std::size_t v = 0; v < screen.size() && v < s.vertex_index.size(); ++v)
+    if(s.vertex_index[v] != 0) draw_singularity(screen[v], s.vertex_index[v], view, canvas);
 }
 
 // The index k/n as a reduced fraction with its sign: +1, -1, +1/2, -1/4.
@@ -408,8 +425,10 @@ inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
   std::map<int, std::size_t> count;
   for(int k : s.face_index)
     if(k != 0) ++count[k];
+  for(int k : s.vertex_index)
+    if(k != 0) ++count[k];
   int x = 220;
-  text(canvas, x, y0 + 18, "index:", 3, ink);
+  text(canvas, x, y0 + 18, count.empty() ? "no singularity" : "index:", 3, ink);
   x += 7 * 18;
   for(auto it = count.rbegin(); it != count.rend() && x < canvas.w - 200; ++it)
   {
@@ -436,19 +455,27 @@ inline bool render(const Scene& s, std::ostream& os, int panel = 560)
     return cos_angle * v + sin_angle * cross(k, v) + ((1. - cos_angle) * dot(k, v)) * k;
   };
   const V3 directions[4] = {front, rotate(unit(V3{1, -1, -1})), rotate(unit(V3{-1, 1, -1})), rotate(unit(V3{-1, -1, 1}))};
-  std::vector<V3> normals(s.points.size(), V3{0, 0, 0});
+  Anchors anchors;
+  if(!s.directions_on_faces) anchors.points = s.points;
+  anchors.normals.assign(anchors.points.size(), V3{0, 0, 0});
   double edge_sum = 0.;
   for(const auto& t : s.triangles)
   {
     const V3 n = cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]);
-    for(int c = 0; c < 3; ++c) normals[t[c]] = normals[t[c]] + n;
+    if(s.directions_on_faces)
+    {
+      anchors.points.push_back((1. / 3.) * (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]));
+      anchors.normals.push_back(n);
+    }
+    else
+      for(int c = 0; c < 3; ++c) anchors.normals[t[c]] = anchors.normals[t[c]] + n;
     for(int c = 0; c < 3; ++c) edge_sum += norm(s.points[t[(c + 1) % 3]] - s.points[t[c]]);
   }
   const double mean_edge = edge_sum / (3. * s.triangles.size());
   const int legend = 70;
   Canvas canvas(2 * panel, 2 * panel + legend);
   for(int v = 0; v < 4; ++v)
-    draw_view(s, make_view(s.points, directions[v], (v % 2) * panel, (v / 2) * panel, panel), mean_edge, normals, canvas);
+    draw_view(s, make_view(s.points, directions[v], (v % 2) * panel, (v / 2) * panel, panel), mean_edge, anchors, canvas);
   for(int x = 0; x < 2 * panel; ++x) canvas.set(x, panel, {170, 170, 170});  // the panels' borders
   for(int y = 0; y < 2 * panel; ++y) canvas.set(panel, y, {170, 170, 170});
   draw_legend(s, 2 * panel, canvas);

@@ -2,7 +2,8 @@
 manual's figure shows it: the shaded mesh, all n directions of the field as
 glyphs at the same points (arrows for odd n, whose directions have a sign;
 line segments through the point for even n, whose opposite directions are one
-line), and the singularities as markers coloured by their index.
+line), and the singularities as markers coloured by their index. A field
+on faces (--on faces) is drawn at the triangles' centres.
 
     pvpython show_in_paraview.py FIELD [SINGULARITIES] [--screenshot PNG]
 
@@ -18,10 +19,14 @@ from paraview import simple
 GLYPHS = 4000  # about this many glyph points, the same points for every direction
 
 
-def field_degree(reader):
-    """n: the number of direction_k arrays of the file's point data."""
-    names = reader.PointData.keys()
-    return sum(1 for name in names if name.startswith("direction_"))
+def field_layout(reader):
+    """n (the number of direction_k arrays) and where they live: "POINTS" for a
+    field on vertices, "CELLS" for a field on faces (--on faces)."""
+    for association, data in (("POINTS", reader.PointData), ("CELLS", reader.CellData)):
+        n = sum(1 for name in data.keys() if name.startswith("direction_"))
+        if n > 0:
+            return n, association
+    return 0, "POINTS"
 
 
 def show_direction_field(field, singularities=None, view=None):
@@ -35,16 +40,18 @@ def show_direction_field(field, singularities=None, view=None):
     info = mesh.GetDataInformation()
     bounds = info.GetBounds()
     diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
-    n = field_degree(mesh)
+    n, association = field_layout(mesh)
     shown = range(n) if n % 2 == 1 else range(n // 2)  # direction k + n/2 is the same line as direction k
-    stride = max(1, info.GetNumberOfPoints() // GLYPHS)
+    # glyphs at the points, or at the triangles' centres for a field on faces
+    anchors = info.GetNumberOfPoints() if association == "POINTS" else info.GetNumberOfCells()
+    stride = max(1, anchors // GLYPHS)
     # about the spacing of the glyph points on a surface of that size
-    size = 0.7 * diagonal / max(1.0, info.GetNumberOfPoints() / stride) ** 0.5
+    size = 0.7 * diagonal / max(1.0, anchors / stride) ** 0.5
     glyphs = []
     for k in shown:
         glyph = simple.Glyph(Input=mesh, GlyphType="Arrow" if n % 2 == 1 else "Line")
-        glyph.OrientationArray = ["POINTS", "direction_%d" % k]
-        glyph.ScaleArray = ["POINTS", "No scale array"]
+        glyph.OrientationArray = [association, "direction_%d" % k]
+        glyph.ScaleArray = [association, "No scale array"]
         glyph.ScaleFactor = size
         glyph.GlyphMode = "Every Nth Point"
         glyph.Stride = stride

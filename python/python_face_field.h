@@ -20,7 +20,8 @@ struct Face_field_result
 };
 
 const char* const face_option_names[] = {"degree", "align", "boundary", "guidance", "alignment_weight", "lambda_t",
-                                         "constraints", "feature_edges", "feature_angle", "feature_cleanup", "prescribed", "intrinsic_mollification",
+                                         "constraints", "feature_edges", "feature_angle", "feature_cleanup", "prescribed",
+                                         "singularity_cancellation_radius", "intrinsic_mollification",
                                          "max_iterations", "tolerance", "seed"};
 
 struct Face_options
@@ -29,6 +30,7 @@ struct Face_options
   std::vector<Kernel::Vector_3> guidance;                           // per face; empty: none
   std::vector<std::pair<Face_index, Kernel::Vector_3> > constraints;  // (face, direction)
   std::optional<std::vector<std::pair<Vertex_index, int> > > prescribed;  // (vertex, k)
+  double cancellation_radius = 0.;  // singularity_cancellation_radius
 };
 
 // prescribed = k x 2 (vertex, k): index k / n at interior vertices
@@ -75,7 +77,8 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
     const std::string key = py::cast<std::string>(item.first);
     if(std::find(std::begin(face_option_names), std::end(face_option_names), key) == std::end(face_option_names))
       throw py::type_error("unexpected keyword argument '" + key + "'");
-    if(key != "guidance" && key != "constraints" && key != "prescribed") common[item.first] = item.second;
+    if(key != "guidance" && key != "constraints" && key != "prescribed" && key != "singularity_cancellation_radius")
+      common[item.first] = item.second;
   }
   Face_options o;
   const bool guided = kw.contains("guidance") && !kw["guidance"].is_none();
@@ -100,6 +103,9 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
       refuse("prescribed singularities take no lambda_t or alignment_weight");
     read_prescribed_vertices(kw["prescribed"], mesh, o);
   }
+  if(kw.contains("singularity_cancellation_radius") && !kw["singularity_cancellation_radius"].is_none())
+    o.cancellation_radius = option_as<double>(kw["singularity_cancellation_radius"],
+                                              "singularity_cancellation_radius", "a number");
   return o;
 }
 
@@ -129,7 +135,8 @@ SMDF::Face_direction_field_result compute_on_faces(Mesh& mesh, const Face_option
                     .face_is_constrained_map(CGAL::make_property_map(constrained))
                     .face_constrained_direction_map(CGAL::make_property_map(wanted))
                     .singularities_output_iterator(std::back_inserter(singular))
-                    .edge_matching_map(CGAL::make_property_map(matching));
+                    .edge_matching_map(CGAL::make_property_map(matching))
+                    .singularity_cancellation_radius(o.cancellation_radius);
   auto out = CGAL::make_property_map(directions);
   auto with_guidance = [&](auto np_) {
     if(guidance.empty()) return SMDF::compute_globally_optimal_face_directions(mesh, out, np_);
@@ -228,7 +235,8 @@ Face_field_result compute_face_directions(const py::object& V, const py::object&
 const char* const face_doc =
   "compute_face_directions(V, F, /, *, degree=4, align=None, guidance=None, lambda_t=None, alignment_weight=None,\n"
   "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None, feature_cleanup=4,\n"
-  "                        prescribed=None, intrinsic_mollification=1e-6, max_iterations=1000, tolerance=1e-10,\n"
+  "                        prescribed=None, singularity_cancellation_radius=0.0, intrinsic_mollification=1e-6,\n"
+  "                        max_iterations=1000, tolerance=1e-10,\n"
   "                        seed=0)\n\n"
   "The smoothest (or aligned) n-direction field on the faces of the mesh (V, F): one direction per face,\n"
   "singularities at vertices, the principal matching per edge (user manual, 'Fields on Faces'). guidance is\n"
@@ -238,7 +246,11 @@ const char* const face_doc =
   "from f to the face across), mismatch (the same modulo n, as MIQ takes it), and the report.\n"
   "prescribed (k, 2: vertex, k) places the singularities at interior vertices instead: any indices that add up\n"
   "to n chi on each closed component are shown exactly, the matching included (non_principal_jumps counts the\n"
-  "edges where it is not the principal one, which readers that recompute it would read differently).";
+  "edges where it is not the principal one, which readers that recompute it would read differently).\n"
+  "singularity_cancellation_radius > 0 removes the pairs of singular vertices of opposite index at most that far\n"
+  "apart along the edges (a fraction of the bounding box's diagonal, e.g. 0.1) and returns the parallel field\n"
+  "with the others: fewer irregular vertices in quad meshes (cancelled_pairs counts them; not with features,\n"
+  "constraints, boundary, lambda_t or alignment_weight).";
 
 void bind_face_field(py::module_& m)
 {
@@ -271,6 +283,9 @@ void bind_face_field(py::module_& m)
     .def_property_readonly("prescribed", [](const Face_field_result& r) { return r.report.prescribed; })
     .def_property_readonly("non_principal_jumps",
                            [](const Face_field_result& r) { return r.report.number_of_non_principal_jumps; })
+    .def_property_readonly("cancelled_pairs",
+                           [](const Face_field_result& r) { return r.report.number_of_cancelled_pairs; },
+                           "pairs of opposite singular vertices removed by singularity_cancellation_radius")
     .def(py::pickle(
       [](const Face_field_result& r) {
         return py::make_tuple(r.face_directions, r.pd2, r.singular_vertices, r.matching, r.mismatch,

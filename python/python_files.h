@@ -1,6 +1,8 @@
 // The exchange writers for Python: write_vtk(), write_vtk_singularities(),
 // write_ply(), write_rosy(), write_ffield(), write_singularity_list(), each
-// (path, V, F, result) as the command-line program writes them (the library's
+// (path, V, F, result), and for a field on faces (path, V, F, face field)
+// write_vtk(), write_vtk_singularities(), write_rosy(), write_ffield(),
+// write_rawfield(), write_sing(), write_matching(), as the command-line program writes them (the library's
 // IO::write_*() on make_direction_field_data()). A file is written under a
 // temporary name and renamed when complete: a failure leaves no partial file.
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_FILES_H
@@ -14,6 +16,7 @@
 #include "file_io/output_files.h"
 
 #include <functional>
+#include <vector>
 
 namespace {
 
@@ -50,6 +53,37 @@ SMDF::Direction_field_data field_data(const py::object& V, const py::object& F, 
   }
   return SMDF::make_direction_field_data(mesh, CGAL::make_property_map(directions), result.report, singular,
                                          CGAL::parameters::vertex_magnitude_map(CGAL::make_property_map(magnitudes)));
+}
+
+// The field on faces of `field` on the mesh of V and F (its rows are the
+// data's triangles, so that the matching per row side carries over as it is).
+SMDF::Direction_field_data face_field_data(const py::object& V, const py::object& F, const Face_field_result& field)
+{
+  const Index_array rows = integer_array(F, "F");
+  const Mesh mesh = make_mesh(real_array(V, "V", "an array of numbers of shape (number of vertices, 3)"), rows);
+  const auto d = field.face_directions.unchecked<2>();
+  const auto s = field.singular_vertices.unchecked<2>();
+  const auto j = field.matching.unchecked<2>();
+  if(static_cast<std::size_t>(d.shape(0)) != mesh.number_of_faces())
+    refuse("the field was computed on another mesh (" + std::to_string(d.shape(0)) + " directions for " +
+           std::to_string(mesh.number_of_faces()) + " faces)");
+  SMDF::Direction_field_data data;
+  data.degree = field.report.degree;
+  for(Vertex_index v : mesh.vertices()) data.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  const auto r = rows.unchecked<2>();
+  for(py::ssize_t f = 0; f < d.shape(0); ++f)
+  {
+    data.faces.push_back({std::size_t(r(f, 0)), std::size_t(r(f, 1)), std::size_t(r(f, 2))});
+    data.face_directions.push_back({d(f, 0), d(f, 1), d(f, 2)});
+    data.face_matching.push_back({int(j(f, 0)), int(j(f, 1)), int(j(f, 2))});
+  }
+  for(py::ssize_t i = 0; i < s.shape(0); ++i)
+  {
+    if(s(i, 0) < 0 || static_cast<std::size_t>(s(i, 0)) >= mesh.number_of_vertices())
+      refuse("the field's singular vertices are not vertices of this mesh");
+    data.vertex_singularities.emplace_back(static_cast<std::size_t>(s(i, 0)), static_cast<int>(s(i, 1)));
+  }
+  return data;
 }
 
 // Writes through `write` as the program writes its outputs (output_files.h):
@@ -113,47 +147,109 @@ py::dict field_arrays(const py::object& V, const py::object& F, const Result& re
   return arrays;
 }
 
-void bind_files(py::module_& m)
+typedef std::function<bool(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
+typedef std::vector<std::pair<const char*, Writer> > Writers;
+
+bool write_vtk(std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path)
 {
-  py::register_exception<File_error>(m, "FileError", PyExc_OSError);
-  typedef std::function<bool(std::ostream&, const SMDF::Direction_field_data&, const std::string&)> Writer;
-  const std::pair<const char*, Writer> writers[] = {
-    {"write_vtk", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(is_vtu(path)) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d);
-       return true; }},
-    {"write_vtk_singularities", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path) {
-       if(is_vtu(path) && d.singularities.empty()) return false;  // meshio reads no .vtu without points
-       if(is_vtu(path)) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d);
-       return true; }},
-    {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
-       SMDF::IO::write_PLY(os, d);
-       return true; }},
-    {"write_rosy", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
-       crosses_only(d, "rosy");
-       SMDF::IO::write_rosy(os, d);
-       return true; }},
-    {"write_ffield", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
-       crosses_only(d, "ffield");
-       SMDF::IO::write_ffield(os, d);
-       return true; }},
-    {"write_singularity_list", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
-       SMDF::IO::write_singularities(os, d);
-       return true; }}};
+  if(is_vtu(path)) SMDF::IO::write_VTU(os, d); else SMDF::IO::write_VTK(os, d);
+  return true;
+}
+
+bool write_vtk_singularities(std::ostream& os, const SMDF::Direction_field_data& d, const std::string& path)
+{
+  if(is_vtu(path) && d.singularities.empty() && d.vertex_singularities.empty())
+    return false;  // meshio reads no .vtu without points
+  if(is_vtu(path)) SMDF::IO::write_VTU_singularities(os, d); else SMDF::IO::write_VTK_singularities(os, d);
+  return true;
+}
+
+bool write_rosy(std::ostream& os, const SMDF::Direction_field_data& d, const std::string&)
+{
+  crosses_only(d, "rosy");
+  SMDF::IO::write_rosy(os, d);
+  return true;
+}
+
+bool write_ffield(std::ostream& os, const SMDF::Direction_field_data& d, const std::string&)
+{
+  crosses_only(d, "ffield");
+  SMDF::IO::write_ffield(os, d);
+  return true;
+}
+
+// The writers of a field on vertices (of a Result).
+Writers vertex_field_writers()
+{
+  return {{"write_vtk", write_vtk}, {"write_vtk_singularities", write_vtk_singularities},
+          {"write_ply", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+             SMDF::IO::write_PLY(os, d);
+             return true; }},
+          {"write_rosy", write_rosy}, {"write_ffield", write_ffield},
+          {"write_singularity_list", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+             SMDF::IO::write_singularities(os, d);
+             return true; }}};
+}
+
+// The writers of a field on faces (of a FaceField): Directional's files, and
+// those of both kinds.
+Writers face_field_writers()
+{
+  return {{"write_rawfield", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+             SMDF::IO::write_rawfield(os, d);
+             return true; }},
+          {"write_sing", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+             SMDF::IO::write_vertex_singularities(os, d);
+             return true; }},
+          {"write_matching", [](std::ostream& os, const SMDF::Direction_field_data& d, const std::string&) {
+             SMDF::IO::write_matching(os, d);
+             return true; }},
+          {"write_vtk", write_vtk}, {"write_vtk_singularities", write_vtk_singularities},
+          {"write_rosy", write_rosy}, {"write_ffield", write_ffield}};
+}
+
+// Each writer as a function of (path, V, F, field): the field made into the
+// data as `to_data` does, written without the GIL.
+template <typename Field, typename ToData>
+void bind_writers(py::module_& m, const Writers& writers, const ToData& to_data, const char* field_name,
+                  const char* doc)
+{
   for(const auto& w : writers)
   {
     const Writer writer = w.second;
-    m.def(w.first, [writer](const py::object& path_object, const py::object& V, const py::object& F,
-                            const Result& result) {
+    m.def(w.first, [writer, to_data](const py::object& path_object, const py::object& V, const py::object& F,
+                                     const Field& field) {
             const std::string path = path_argument(path_object);
-            const SMDF::Direction_field_data data = field_data(V, F, result);
+            const SMDF::Direction_field_data data = to_data(V, F, field);
             py::gil_scoped_release release;
             return write_file(path, [&](std::ostream& os) { return writer(os, data, path); });
           },
-          py::arg("path"), py::arg("V"), py::arg("F"), py::arg("result"),
-          "Writes the field of `result` (computed on V, F) as the command-line program's option of the same "
-          "name does (write_vtk: .vtk or .vtu by the name). Returns True, or False when nothing was written "
-          "(write_vtk_singularities to a .vtu for a field without singularities: meshio reads no .vtu without "
-          "points; an older file of that name is removed). Raises OSError if the file cannot be written.");
+          py::arg("path"), py::arg("V"), py::arg("F"), py::arg(field_name), doc);
+  }
+}
+
+void bind_files(py::module_& m)
+{
+  py::register_exception<File_error>(m, "FileError", PyExc_OSError);
+  bind_writers<Result>(m, vertex_field_writers(), field_data, "result",
+    "Writes the field of `result` (computed on V, F) as the command-line program's option of the same "
+    "name does (write_vtk: .vtk or .vtu by the name). Returns True, or False when nothing was written "
+    "(write_vtk_singularities to a .vtu for a field without singularities: meshio reads no .vtu without "
+    "points; an older file of that name is removed). Raises OSError if the file cannot be written.");
+  bind_writers<Face_field_result>(m, face_field_writers(), face_field_data, "field",
+    "Writes the field on faces `field` (compute_face_directions() on V, F) as the command-line program's "
+    "option of the same name does with --on faces (write_vtk: .vtk or .vtu by the name, the directions per "
+    "face; write_rawfield, write_sing, write_matching: Directional's files). Returns True, or False when "
+    "nothing was written (write_vtk_singularities to a .vtu for a field without singular vertices). Raises "
+    "OSError if the file cannot be written.");
+  for(const char* vertex_only : {"write_ply", "write_singularity_list"})
+  {
+    const std::string name = vertex_only;
+    m.def(vertex_only, [name](const py::object&, const py::object&, const py::object&, const Face_field_result&) -> bool {
+            refuse(name + " writes a field on vertices (a Result); a FaceField is written by write_vtk, "
+                          "write_rosy, write_ffield, write_rawfield, write_sing and write_matching");
+          },
+          py::arg("path"), py::arg("V"), py::arg("F"), py::arg("field"));
   }
   m.def("field_arrays", &field_arrays, py::arg("V"), py::arg("F"), py::arg("result"),
         "The field of `result` (computed on V, F) as the files store it: a dict of 'normals' (|V|, 3), "

@@ -196,7 +196,8 @@ py::tuple face_report_state(const SMDF::Face_direction_field_result& report)
   for(const auto& c : report.components) components.append(face_component_state(c));
   return py::make_tuple(report.degree, components, report.index_sum, report.number_of_singular_vertices,
                         report.iterations, report.residual, report.converged, report.mollification,
-                        report.prescribed, report.number_of_non_principal_jumps, timings_state(report.timings));
+                        report.prescribed, report.number_of_non_principal_jumps, timings_state(report.timings),
+                        report.number_of_cancelled_pairs);
 }
 
 SMDF::Face_direction_field_result face_report_from(const py::tuple& state)
@@ -214,6 +215,7 @@ SMDF::Face_direction_field_result face_report_from(const py::tuple& state)
   report.prescribed = r.next<bool>();
   report.number_of_non_principal_jumps = r.next<std::size_t>();
   report.timings = timings_from(r.next<py::tuple>());
+  report.number_of_cancelled_pairs = state.size() > 11 ? r.next<std::size_t>() : 0;  // earlier pickles: none
   return report;
 }
 

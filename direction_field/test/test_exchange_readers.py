@@ -146,6 +146,60 @@ for path, used_vertices, faces in meshes:
               sum(1 for l in obj if l and l[0] == "v") == points, what + ": .obj lines")
         check(len(lines) > 0, what + ": some field lines")
 
+
+
+def check_face_field(m, out, what, n, used_vertices, faces, d):
+    """A field on faces (--on faces): per-cell directions and normals, direction_0 the active cell vectors (so
+    that ParaView's Glyph filter puts its arrows at the triangles' centres), the singular vertices' index k / n
+    as point data, no active scalars."""
+    cells = {c.type: len(c.data) for c in m.cells}
+    shapes = {k: v[0].shape for k, v in m.cell_data.items()}
+    expected = dict({"normals": (faces, 3), "directions": (faces, 3 * n)},
+                    **{"direction_%d" % k: (faces, 3) for k in range(n)})
+    check(len(m.points) == used_vertices and cells == {"triangle": faces} and
+          all(shapes.get(k) == v for k, v in expected.items()), what + ": meshio cell arrays %s" % shapes)
+    index = m.point_data.get("singularity_index", numpy.zeros(0)).reshape(-1)
+    check(len(index) == used_vertices and abs(index.sum() * n - d["index_sum"]) < 1e-9 and
+          (index != 0).sum() == d["singular_vertices"], what + ": meshio point data singularity_index")
+    if all(shapes.get(k) == v for k, v in expected.items()):
+        all_d = m.cell_data["directions"][0]
+        normals = m.cell_data["normals"][0]
+        check(numpy.abs(numpy.linalg.norm(all_d.reshape(-1, 3), axis=1) - 1).max() < 1e-9 and
+              numpy.abs((normals * m.cell_data["direction_0"][0]).sum(axis=1)).max() < 1e-9,
+              what + ": unit directions in the faces' planes")
+    pd, cd = out.GetPointData(), out.GetCellData()
+    check(pd.GetScalars() is None and cd.GetScalars() is None and pd.GetVectors() is None and
+          cd.GetVectors() is not None and cd.GetVectors().GetName() == "direction_0",
+          what + ": VTK: direction_0 the active cell vectors, no active scalars")
+    check(out.GetNumberOfPoints() == used_vertices and out.GetNumberOfCells() == faces and
+          int(out.GetFieldData().GetArray("degree").GetTuple1(0)) == n, what + ": VTK points, cells, degree")
+
+
+for path, used_vertices, faces in meshes:
+    for n in [4, 1]:
+        name = os.path.join(OUT, "%s_faces_%d" % (os.path.basename(path), n))
+        d = run([path, "--on", "faces", "--degree", str(n), "--vtk", name + ".vtu", "--vtk-singularities",
+                 name + "_sing.vtu", "--streamlines", name + "_lines.vtp"])
+        run([path, "--on", "faces", "--degree", str(n), "--vtk", name + ".vtk", "--vtk-singularities",
+             name + "_sing.vtk"])
+        if d is None:
+            continue
+        what = "%s on faces n=%d" % (os.path.basename(path), n)
+        used = used_vertices or d["mesh_vertices"]
+        nf = faces or d["mesh_faces"]
+        ns = d["singular_vertices"]
+        for ext in [".vtu", ".vtk"]:
+            check_face_field(meshio.read(name + ext), vtk_read(name + ext), what + " " + ext, n, used, nf, d)
+            if ns == 0 and ext == ".vtu":
+                continue
+            m = meshio.read(name + "_sing" + ext)
+            index = m.point_data.get("singularity_index", numpy.zeros(1)).reshape(-1)
+            check(len(m.points) == 6 * ns and abs(index.sum() * n - 6 * d["index_sum"]) < 1e-9,
+                  what + ext + ": meshio reads a marker per singular vertex")
+        out = vtk_read(name + "_lines.vtp")
+        if faces is None:  # (every face of the octahedron has a singular vertex: no line can start)
+            check(out.GetNumberOfLines() > 0, what + ": field lines of the field on faces (.vtp)")
+
 # --mesh-out: a repaired file's mesh, read back, gives the same field
 quads = os.path.join(OUT, "cube_quads.off")
 with open(quads, "w") as f:

@@ -77,17 +77,18 @@ with open(octahedron, "w") as f:
     f.write("OFF\n%d %d 0\n" % (len(points), len(faces)) + "".join("%r %r %r\n" % p for p in points) +
             "".join("3 %d %d %d\n" % t for t in faces))
 
-for n, ext in [(4, "vtu"), (1, "vtk"), (3, "vtu")]:
-    field, markers = [os.path.join(OUT, "%s_%d.%s" % (kind, n, ext)) for kind in ("field", "singularities")]
-    r = subprocess.run([BIN, octahedron, "--degree", str(n), "--vtk", field, "--vtk-singularities", markers, "--quiet"],
-                       capture_output=True, text=True, env=env)
+for n, ext, on in [(4, "vtu", "vertices"), (1, "vtk", "vertices"), (3, "vtu", "vertices"), (4, "vtu", "faces"),
+                   (1, "vtk", "faces")]:
+    field, markers = [os.path.join(OUT, "%s_%d_%s.%s" % (kind, n, on, ext)) for kind in ("field", "singularities")]
+    r = subprocess.run([BIN, octahedron, "--degree", str(n), "--on", on, "--vtk", field, "--vtk-singularities",
+                        markers, "--quiet"], capture_output=True, text=True, env=env)
     check(r.returncode == 0, "direction_field n=%d: %r" % (n, r.stderr))
-    picture = os.path.join(OUT, "paraview_%d.png" % n)
+    picture = os.path.join(OUT, "paraview_%d_%s.png" % (n, on))
     r = subprocess.run(command + [check_script, os.path.dirname(os.path.abspath(SCRIPT)), field, markers, str(n),
                                   picture], capture_output=True, text=True, env=env, timeout=300)
     values = dict(l.split(None, 1) for l in r.stdout.splitlines() if l.count(" ") >= 1 and l.split()[0].islower()
                   and "_" in l.split()[0])
-    what = "n=%d .%s" % (n, ext)
+    what = "n=%d .%s on %s" % (n, ext, on)
     check(r.returncode == 0, what + ": pvbatch ran (%r)" % r.stderr[-400:])
     if r.returncode != 0:
         continue

@@ -1,6 +1,6 @@
 // A cross field on the faces of a mesh, as quad meshers read it: one direction
 // per face, singularities at vertices, the matching across each edge, and the
-// .rosy and .sharp files QuadWild loads beside the mesh.
+// .rosy and .sharp files QuadWild loads beside the mesh, and a file ParaView opens.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
@@ -40,25 +40,20 @@ int main(int argc, char* argv[])
       .edge_matching_map(matching));
   std::cout << singular.size() << " singular vertices, index sum " << result.index_sum << "/4\n";
 
-  // the files QuadWild reads with this mesh (written as OFF: its faces in the same order)
-  SMDF::Direction_field_data data;
-  data.degree = 4;
-  for(auto v : mesh.vertices()) data.points.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  // the files QuadWild reads with this mesh (written as OFF: its faces in the
+  // same order), and one for ParaView: the directions per triangle, the
+  // singular vertices marked
+  const SMDF::Direction_field_data data = SMDF::make_face_direction_field_data(
+    mesh, direction, result, singular, CGAL::parameters::edge_matching_map(matching));
   std::vector<std::array<std::size_t, 2> > features;
-  for(auto f : mesh.faces())
-  {
-    std::array<std::size_t, 3> t;
-    int c = 0;
-    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = v;
-    data.faces.push_back(t);
-    data.face_directions.push_back({direction[f].x(), direction[f].y(), direction[f].z()});
-  }
   for(auto e : mesh.edges())
     if(is_feature[e]) features.push_back({mesh.source(mesh.halfedge(e)), mesh.target(mesh.halfedge(e))});
   std::ofstream rosy("field.rosy"), sharp("field.sharp");
   CGAL::IO::write_OFF("field_mesh.off", mesh, CGAL::parameters::stream_precision(17));
   SMDF::IO::write_rosy(rosy, data);
   SMDF::IO::write_sharp(sharp, data, features);
-  std::cout << "wrote field_mesh.off, field.rosy and field.sharp" << std::endl;
+  std::ofstream vtu("field.vtu");
+  SMDF::IO::write_VTU(vtu, data);
+  std::cout << "wrote field_mesh.off, field.rosy, field.sharp and field.vtu" << std::endl;
   return EXIT_SUCCESS;
 }

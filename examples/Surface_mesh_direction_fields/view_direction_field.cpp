@@ -1,6 +1,6 @@
 // Shows the smoothest cross field of a mesh in CGAL's basic viewer: the four
 // directions at each vertex, the singular faces (red: +, blue: -), then a
-// second window with the field lines.
+// second window with the field lines, a third with the field on faces.
 //   usage: view_direction_field [MESH] [n]
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -39,5 +39,15 @@ int main(int argc, char** argv)
   const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data);
   std::cout << singularities.size() << " singular faces, " << lines.size() << " field lines" << std::endl;
   SMDF::draw_direction_field(data, lines, "Field lines");
+
+  // the field on faces, as quad meshers read it: directions at the triangles'
+  // centres, singularities at vertices
+  auto face_direction = mesh.add_property_map<Mesh::Face_index, Kernel::Vector_3>("f:direction").first;
+  std::vector<std::pair<Mesh::Vertex_index, int> > singular_vertices;
+  const SMDF::Face_direction_field_result on_faces = SMDF::compute_globally_optimal_face_directions(
+    mesh, face_direction,
+    CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular_vertices)));
+  SMDF::draw_direction_field(SMDF::make_face_direction_field_data(mesh, face_direction, on_faces, singular_vertices),
+                             std::vector<SMDF::Streamline>(), "Field on faces");
   return lines.empty() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

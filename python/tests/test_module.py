@@ -2,6 +2,7 @@
 import json
 import math
 import os
+import pickle
 import subprocess
 import sys
 import threading
@@ -652,6 +653,54 @@ def test_writers_write_the_programs_files(program, shared, tmp_path, writer, opt
     subprocess.run([program, mesh, option, str(theirs), "--quiet"], check=True, capture_output=True)
     assert ours.read_bytes() == theirs.read_bytes()
     assert sorted(os.listdir(tmp_path)) == sorted(["py_" + name, "cli_" + name])
+
+
+@pytest.mark.parametrize("writer,option,name", [
+    ("write_vtk", "--vtk", "f.vtu"), ("write_vtk", "--vtk", "f.vtk"),
+    ("write_vtk_singularities", "--vtk-singularities", "s.vtk"), ("write_rosy", "--rosy", "f.rosy"),
+    ("write_ffield", "--ffield", "f.ffield"), ("write_rawfield", "--rawfield", "f.rawfield"),
+    ("write_sing", "--sing", "f.sing"), ("write_matching", "--matching", "f.matching")])
+def test_face_field_writers_write_the_programs_files(program, shared, tmp_path, writer, option, name):
+    mesh = os.path.join(shared, "spot.off")
+    V, F, _ = smdf.read_mesh(mesh)
+    field = smdf.compute_face_directions(V, F, degree=4)
+    ours, theirs = tmp_path / ("py_" + name), tmp_path / ("cli_" + name)
+    assert getattr(smdf, writer)(str(ours), V, F, field) is True
+    subprocess.run([program, mesh, "--on", "faces", option, str(theirs), "--quiet"], check=True, capture_output=True)
+    assert ours.read_bytes() == theirs.read_bytes()
+
+
+def test_singularity_cancellation_as_the_program(program, shared):
+    mesh = os.path.join(shared, "cow.off")
+    V, F, _ = smdf.read_mesh(mesh)
+    smooth = smdf.compute_face_directions(V, F)
+    fewer = smdf.compute_face_directions(V, F, singularity_cancellation_radius=0.07)
+    assert fewer.cancelled_pairs > 0 and fewer.prescribed and fewer.solves == ["parallel section"]
+    assert len(fewer.singular_vertices) + 2 * fewer.cancelled_pairs == len(smooth.singular_vertices)
+    assert fewer.index_sum == smooth.index_sum == 8
+    assert set(map(tuple, fewer.singular_vertices.tolist())) <= set(map(tuple, smooth.singular_vertices.tolist()))
+    out = subprocess.run([program, mesh, "--on", "faces", "--cancel-singularities", "0.07", "--json"],
+                         check=True, capture_output=True, text=True).stdout
+    d = json.loads(out)
+    assert d["cancelled_pairs"] == fewer.cancelled_pairs and d["singular_vertices"] == len(fewer.singular_vertices)
+    assert pickle.loads(pickle.dumps(fewer)).cancelled_pairs == fewer.cancelled_pairs
+    with pytest.raises(ValueError, match="feature edges"):
+        smdf.compute_face_directions(V, F, singularity_cancellation_radius=0.07, feature_angle=35.0)
+    with pytest.raises(ValueError, match="non-negative"):
+        smdf.compute_face_directions(V, F, singularity_cancellation_radius=-1.0)
+
+
+def test_face_field_files_for_viewers(tmp_path):
+    V, F = sphere(2)
+    field = smdf.compute_face_directions(V, F, degree=4)
+    assert smdf.write_vtk(str(tmp_path / "f.vtu"), V, F, field) is True
+    text = (tmp_path / "f.vtu").read_text()
+    assert '<CellData Vectors="direction_0">' in text and "singularity_index" in text
+    with pytest.raises(ValueError, match="a FaceField is written by write_vtk"):
+        smdf.write_ply(str(tmp_path / "f.ply"), V, F, field)
+    with pytest.raises(ValueError, match="another mesh"):
+        smdf.write_vtk(str(tmp_path / "g.vtu"), *octahedron(), field)
+    assert sorted(os.listdir(tmp_path)) == ["f.vtu"]
 
 
 def test_markers_of_a_field_without_singularities(tmp_path):

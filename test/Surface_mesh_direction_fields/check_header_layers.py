@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The layers of the package's headers, as the README states them.
+"""The layers of the package's headers, as the README states them, and the
+size of the documents that explain them.
 
 Every header of include/CGAL/Surface_mesh_direction_fields belongs to one
 layer, and includes (directly) only headers of the layers it may use. As every
@@ -43,6 +44,26 @@ def layer_of(relative):
     return "public"
 
 
+# The user manual teaches the method and the README leads a newcomer in: both
+# stay short enough to be read (the details live in the reference manual, the
+# program's README and benchmark/).
+DOCUMENT_LINES = {"doc/Surface_mesh_direction_fields/Surface_mesh_direction_fields.txt": 650, "README.md": 200}
+
+
+def document_sizes(project):
+    failures = []
+    for document, limit in DOCUMENT_LINES.items():
+        path = project / document
+        if not path.exists():
+            failures.append(f"{document} is missing")
+            continue
+        lines = len(path.read_text().splitlines())
+        print(f"{document}: {lines} lines (at most {limit})")
+        if lines > limit:
+            failures.append(f"{document} has {lines} lines, more than {limit}")
+    return failures
+
+
 INCLUDE = re.compile(r'^\s*#\s*include\s*<CGAL/Surface_mesh_direction_fields/([^>]+)>', re.M)
 
 
@@ -70,7 +91,10 @@ def main():
     print("headers per layer: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
     for failure in failures:
         print("layer broken: " + failure)
-    return 1 if failures else 0
+    documents = document_sizes(pathlib.Path(sys.argv[1]).resolve().parent)
+    for failure in documents:
+        print("document too long: " + failure)
+    return 1 if failures or documents else 0
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@
 #include "test_support.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <string>
@@ -427,6 +428,56 @@ void check_prescription_refusals()
   report.check(thrown, "alignment_lambda with a prescription is refused");
 }
 
+// singularity_cancellation_radius: pairs of opposite singular vertices go,
+// the index sum stays, the field shows exactly the singularities left; a
+// radius below every edge's length cancels nothing and changes nothing.
+void check_singularity_cancellation()
+{
+  Mesh lumpy, torus;
+  make_perforated_slab(lumpy, 3, 12);  // holes and corners: singularities of both signs
+  make_torus(torus, 3., 1., 48, 20);
+  for(const Mesh* mesh : {&lumpy, &torus})
+  {
+    const std::string what = mesh == &lumpy ? "perforated slab" : "torus";
+    const Face_field smooth = face_field(*mesh, params::degree(4));
+    const Face_field fewer = face_field(*mesh, params::degree(4).singularity_cancellation_radius(10.));
+    long long positive = 0, negative = 0;
+    for(const auto& vk : smooth.singular) (vk.second > 0 ? positive : negative) += 1;
+    report.check(fewer.result.number_of_cancelled_pairs > 0 && fewer.result.prescribed &&
+                   fewer.singular.size() + 2 * fewer.result.number_of_cancelled_pairs == smooth.singular.size() &&
+                   fewer.result.index_sum == smooth.result.index_sum,
+                 what + ": " + std::to_string(fewer.result.number_of_cancelled_pairs) + " pairs of " +
+                   std::to_string(smooth.singular.size()) + " singular vertices cancelled, the index sum kept");
+    std::map<Vertex_index, int> kept(smooth.singular.begin(), smooth.singular.end());
+    bool subset = true;
+    for(const auto& vk : fewer.singular) subset = subset && kept.count(vk.first) && kept[vk.first] == vk.second;
+    report.check(subset, what + ": the singularities left are the smoothest field's own");
+    check_poincare_hopf(fewer, 4, what + " after cancellation");
+    check_matching_closes(*mesh, fewer, 4, what + " after cancellation");
+    const Face_field same = face_field(*mesh, params::degree(4).singularity_cancellation_radius(1e-9));
+    report.check(same.result.number_of_cancelled_pairs == 0 && !same.result.prescribed &&
+                   same.directions == smooth.directions && same.singular == smooth.singular,
+                 what + ": a radius below every edge cancels nothing and gives the smoothest field");
+  }
+  auto dirs = lumpy.add_property_map<Face_index, Vector_3>("f:cancelled").first;
+  auto is_feature = lumpy.add_property_map<Edge_index, bool>("e:feature", false).first;
+  is_feature[*edges(lumpy).begin()] = true;
+  for(const auto& [np_name, refuse] : std::vector<std::pair<std::string, std::function<void()> > >{
+        {"a negative radius", [&] { SMDF::compute_globally_optimal_face_directions(
+                                      lumpy, dirs, params::singularity_cancellation_radius(-1.)); }},
+        {"feature edges", [&] { SMDF::compute_globally_optimal_face_directions(
+                                  lumpy, dirs, params::singularity_cancellation_radius(0.1).edge_is_feature_map(is_feature)); }},
+        {"a prescription", [&] { SMDF::compute_globally_optimal_face_directions(
+                                   lumpy, dirs, params::singularity_cancellation_radius(0.1).prescribed_singularities(
+                                     Vertex_indices{{Vertex_index(0), 8}})); }}})
+  {
+    bool thrown = false;
+    try { refuse(); }
+    catch(const SMDF::Invalid_input_error& e) { thrown = true; std::cout << "  refused: " << e.what() << "\n"; }
+    report.check(thrown, "singularity_cancellation_radius with " + np_name + " is refused");
+  }
+}
+
 } // namespace
 
 int main()
@@ -440,5 +491,6 @@ int main()
   check_prescription_class();
   check_prescriptions_on_torus_and_disk();
   check_prescription_refusals();
+  check_singularity_cancellation();
   return report.finish();
 }

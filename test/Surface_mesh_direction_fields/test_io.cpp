@@ -440,6 +440,87 @@ void check_normals_at_extreme_scales(Test_report& report)
   }
 }
 
+// A field on faces: make_face_direction_field_data() keeps the library's
+// directions, singular vertices and matching; the VTK file holds them per
+// cell and per point and reads back to the same data; the markers sit on the
+// singular vertices; field lines stay out of the faces around them.
+static void check_face_field_files(Test_report& report, const Mesh& mesh, int degree)
+{
+  const std::string what = "field on faces, n = " + std::to_string(degree);
+  std::vector<Vector_3> directions(mesh.number_of_faces());
+  std::vector<int> matching(mesh.number_of_edges(), 0);
+  std::vector<std::pair<Vertex_index, int> > singular;
+  const SMDF::Face_direction_field_result r = SMDF::compute_globally_optimal_face_directions(
+    mesh, CGAL::make_property_map(directions),
+    CGAL::parameters::degree(degree).singularities_output_iterator(std::back_inserter(singular))
+      .edge_matching_map(CGAL::make_property_map(matching)));
+  const SIO::Direction_field_data data = SMDF::make_face_direction_field_data(
+    mesh, CGAL::make_property_map(directions), r, singular,
+    CGAL::parameters::edge_matching_map(CGAL::make_property_map(matching)));
+  long long sum = 0;
+  for(const auto& vk : data.vertex_singularities) sum += vk.second;
+  bool same_directions = data.face_directions.size() == mesh.number_of_faces() && data.directions.empty();
+  for(Face_index f : mesh.faces())
+    same_directions = same_directions && data.face_directions[f] == V3{directions[f].x(), directions[f].y(), directions[f].z()};
+  report.check(same_directions && sum == 2 * degree && data.vertex_singularities.size() == singular.size(),
+               what + ": the data holds the library's directions and singular vertices (index sum n chi)");
+  // the matching per face side is the edge's jump, with the opposite sign from the other face
+  bool matching_ok = data.face_matching.size() == mesh.number_of_faces();
+  for(Mesh::Edge_index e : mesh.edges())
+  {
+    const Mesh::Halfedge_index h = mesh.halfedge(e);  // the jump is stored from this halfedge's face
+    if(mesh.is_border(h) || mesh.is_border(mesh.opposite(h)) || !matching_ok) continue;
+    auto side_of = [&](Mesh::Halfedge_index g) {
+      const auto& t = data.faces[mesh.face(g)];
+      const std::size_t source = mesh.source(g);
+      return data.face_matching[mesh.face(g)][t[0] == source ? 0 : t[1] == source ? 1 : 2];
+    };
+    matching_ok = side_of(h) == matching[e] && side_of(mesh.opposite(h)) == -matching[e];
+  }
+  bool some_jump = false;
+  for(int m : matching) some_jump = some_jump || m != 0;
+  report.check(matching_ok && some_jump,
+               what + ": the matching per face side is the edge's jump, opposite from the other face");
+
+  std::ostringstream vtk;
+  SIO::write_VTK(vtk, data);
+  const std::string text = vtk.str();
+  report.check(text.find("CELL_DATA " + std::to_string(mesh.number_of_faces()) + "\nVECTORS direction_0 double") !=
+                   std::string::npos && text.find("POINT_DATA") != std::string::npos,
+               what + ": the legacy VTK file has direction_0 as the active cell vectors");
+  std::istringstream in(text);
+  const SIO::Direction_field_data back = SIO::read_VTK(in);
+  report.check(back.degree == degree && back.directions.empty() && back.faces == data.faces &&
+                 max_difference(back.face_directions, data.face_directions) == 0. &&
+                 back.vertex_singularities == data.vertex_singularities,
+               what + ": read_VTK gives back the per-face directions and the singular vertices exactly");
+  std::ostringstream vtu;
+  SIO::write_VTU(vtu, data);
+  report.check(vtu.str().find("<CellData Vectors=\"direction_0\">") != std::string::npos,
+               what + ": the .vtu file has direction_0 as the active cell vectors");
+
+  std::ostringstream markers;
+  SIO::write_VTK_singularities(markers, data);
+  std::istringstream marker_in(markers.str());
+  std::string line;
+  std::size_t marker_points = 0;
+  while(std::getline(marker_in, line))
+    if(line.rfind("POINTS ", 0) == 0) marker_points = std::stoul(line.substr(7));
+  report.check(marker_points == 6 * data.vertex_singularities.size() && marker_points > 0,
+               what + ": one marker (6 points) per singular vertex");
+
+  const std::vector<SMDF::Streamline> lines = SMDF::trace_streamlines(data);
+  std::vector<unsigned char> near_singular(data.faces.size(), 0);
+  for(std::size_t f = 0; f < data.faces.size(); ++f)
+    for(const auto& vk : data.vertex_singularities)
+      if(std::count(data.faces[f].begin(), data.faces[f].end(), vk.first)) near_singular[f] = 1;
+  bool avoids = !lines.empty();
+  for(const SMDF::Streamline& l : lines)
+    for(std::size_t f : l.faces) avoids = avoids && !near_singular[f];
+  report.check(avoids, what + ": " + std::to_string(lines.size()) +
+                         " field lines, none through a face around a singular vertex");
+}
+
 int main()
 {
   Test_report report("io");
@@ -450,6 +531,8 @@ int main()
   check_round_trips(report, "icosphere", sphere, 1);
   check_round_trips(report, "icosphere", sphere, 3);
   check_normals_at_extreme_scales(report);
+  check_face_field_files(report, sphere, 4);
+  check_face_field_files(report, sphere, 1);
 
   // A constant field on a planar disk: every face direction is that field.
   {

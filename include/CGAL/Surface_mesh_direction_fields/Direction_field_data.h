@@ -193,6 +193,38 @@ void copy_mesh(const TriangleMesh& tmesh, VertexPointMap vpm, VertexIndexMap vim
   }
 }
 
+// The matching per face side, from the jump of each edge (stored from the
+// face of halfedge(e), e as edges() lists it, to the other face): side c of
+// face f runs from faces[f][c] to faces[f][(c+1)%3], and its jump is the one
+// from f.
+template <typename TriangleMesh, typename EdgeMatchingMap, typename VertexIndexMap, typename FaceIndexMap>
+void copy_face_matching(const TriangleMesh& tmesh, EdgeMatchingMap matching, VertexIndexMap vim, FaceIndexMap fim,
+                        Direction_field_data& data)
+{
+  data.face_matching.assign(data.faces.size(), {0, 0, 0});
+  auto side = [&](auto h) -> int& {
+    const std::size_t f = static_cast<std::size_t>(get(fim, face(h, tmesh)));
+    const std::size_t first = static_cast<std::size_t>(get(vim, source(h, tmesh)));
+    const auto& t = data.faces[f];
+    return data.face_matching[f][t[0] == first ? 0 : t[1] == first ? 1 : 2];
+  };
+  for(auto e : edges(tmesh))
+  {
+    const auto h = halfedge(e, tmesh);
+    if(is_border_edge(h, tmesh)) continue;
+    const int jump = static_cast<int>(get(matching, e));
+    side(h) = jump;
+    side(opposite(h, tmesh)) = -jump;
+  }
+}
+
+// Whether the data holds a field on faces (make_face_direction_field_data(),
+// a .rosy file): directions per face and none per vertex.
+inline bool holds_field_on_faces(const Direction_field_data& data)
+{
+  return data.directions.empty() && !data.faces.empty() && data.face_directions.size() == data.faces.size();
+}
+
 } // namespace internal
 
 inline std::vector<std::array<double, 3> > face_directions(const Direction_field_data& data);
@@ -296,6 +328,59 @@ Direction_field_data make_direction_field_data(const TriangleMesh& tmesh, Vertex
                                                const NamedParameters& np = parameters::default_values())
 {
   return make_direction_field_data(tmesh, direction_map, result.degree, singularities, np);
+}
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsIO
+
+collects a field computed on the faces of `tmesh`
+(`compute_globally_optimal_face_directions()`) into a `Direction_field_data`:
+the points and triangles of the mesh (in the order of its vertex and face
+indices), one direction per face (`face_directions`; the others are its
+rotations by \f$ 2\pi k / n \f$ about the face normal), the singular vertices
+with their integers `k` (`vertex_singularities`) and, if an
+`edge_matching_map` is given, the matching per face side (`face_matching`).
+The per-vertex members stay empty: the data holds a field on faces, which the
+writers of VTK files, the pictures and the field lines recognise.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam FaceDirectionMap a `ReadablePropertyMap` from faces to a 3D vector type with `x()`, `y()`, `z()`
+\tparam SingularityRange a range of `std::pair<vertex_descriptor, int>`, as given by the face field's
+         `singularities_output_iterator`
+
+\param tmesh the mesh
+\param direction_map the first direction of each face
+\param result what `compute_globally_optimal_face_directions()` returned (its degree is used)
+\param singular_vertices the singular vertices and their integers `k`
+\param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`,
+       `edge_matching_map` (the period jump of each edge, as the face field's named parameter of that name)
+\returns the field as plain arrays
+*/
+template <typename TriangleMesh, typename FaceDirectionMap, typename SingularityRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+Direction_field_data make_face_direction_field_data(const TriangleMesh& tmesh, FaceDirectionMap direction_map,
+                                                    const Face_direction_field_result& result,
+                                                    const SingularityRange& singular_vertices,
+                                                    const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  internal::check_degree(result.degree);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tmesh));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
+  Direction_field_data data;
+  data.degree = result.degree;
+  internal::copy_mesh(tmesh, vpm, vim, fim, data);
+  data.face_directions.resize(data.faces.size());
+  for(auto f : faces(tmesh))
+    data.face_directions[static_cast<std::size_t>(get(fim, f))] = internal::to_vec3(get(direction_map, f));
+  for(const auto& vk : singular_vertices)
+    data.vertex_singularities.emplace_back(static_cast<std::size_t>(get(vim, vk.first)), vk.second);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_matching_map_t>::value)
+    internal::copy_face_matching(tmesh, get_parameter(np, CGAL::internal_np::edge_matching_map), vim, fim, data);
+  return data;
 }
 
 /*!

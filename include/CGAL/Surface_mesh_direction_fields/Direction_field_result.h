@@ -238,6 +238,9 @@ struct Face_direction_field_result
   /// (QuadWild's `.rosy`) reads other singular vertices; `edge_matching_map` and Directional's `.matching`
   /// carry it. 0 for the smoothest and aligned fields
   std::size_t number_of_non_principal_jumps = 0;
+  /// number of pairs of singular vertices with opposite indices removed by `singularity_cancellation_radius`
+  /// (0 without it); the field is then the parallel one with the remaining singularities (`prescribed` is `true`)
+  std::size_t number_of_cancelled_pairs = 0;
   /// wall-clock times
   Direction_field_timings timings;
 };

@@ -54,7 +54,9 @@ namespace Surface_mesh_direction_fields {
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
 the same scene from plain data, with field lines (`trace_streamlines()`) drawn
-in dark blue-green.
+in dark blue-green. A field on faces (`make_face_direction_field_data()`)
+shows its `n` directions at each triangle's centre and its singular vertices
+as points, red or blue by the sign of their index.
 
 \param data the field with its mesh
 \param streamlines the lines to draw (may be empty)
@@ -123,10 +125,33 @@ public:
         if(signed_directions && v < data.normals.size())
           add_arrowhead(tip, d, data.normals[v], 0.3 * glyph, CGAL::IO::Color(20, 20, 20));
       }
+    if(holds_field_on_faces(data)) add_face_field(data, signed_directions, glyph);
     for(const Streamline& l : lines) add_line(data, l, signed_directions, glyph);
   }
 
 private:
+  // A field on faces: the n directions at each triangle's centre, the
+  // singular vertices as points in their index's colour.
+  void add_face_field(const Direction_field_data& data, bool signed_directions, double glyph)
+  {
+    for(std::size_t f = 0; f < data.faces.size(); ++f)
+    {
+      const internal::Vec3 normal = internal::triangle_unit_normal(data.points, data.faces[f]);
+      const internal::Vec3 centre = internal::barycentre(data.points, data.faces[f]);
+      for(int k = 0; k < data.degree; ++k)
+      {
+        const internal::Vec3 d = internal::rotated(data.face_directions[f], normal, 2. * CGAL_PI * k / data.degree);
+        if(internal::dot(d, d) == 0.) continue;
+        const internal::Vec3 tip = centre + glyph * d;
+        m_scene.add_segment(point(centre), point(tip), CGAL::IO::Color(20, 20, 20));
+        if(signed_directions) add_arrowhead(tip, d, normal, 0.3 * glyph, CGAL::IO::Color(20, 20, 20));
+      }
+    }
+    for(const auto& vk : data.vertex_singularities)
+      m_scene.add_point(point(data.points[vk.first]), vk.second > 0 ? CGAL::IO::Color(230, 40, 40)
+                                                                    : CGAL::IO::Color(40, 80, 230));
+  }
+
   // The faces, coloured by their index; returns the glyphs' length.
   double add_faces(const Direction_field_data& data)
   {

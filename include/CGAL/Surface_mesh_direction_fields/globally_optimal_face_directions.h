@@ -68,6 +68,26 @@ void read_face_constraints(const NamedParameters& np, const std::vector<FaceDesc
   }
 }
 
+// singularity_cancellation_radius: a length that the parallel field it leads
+// to can honour (it turns as a whole, so it follows no feature or constraint).
+inline void check_cancellation_request(const Face_field_request& r)
+{
+  if(r.cancellation_radius == 0.) return;
+  if(!(r.cancellation_radius > 0.) || !std::isfinite(r.cancellation_radius))
+    throw Invalid_input_error("singularity_cancellation_radius must be a non-negative number (a fraction of the "
+                              "bounding box's diagonal)");
+  if(r.prescribed)
+    throw Invalid_input_error("singularity_cancellation_radius and prescribed_singularities exclude each other "
+                              "(the prescription places every singularity)");
+  const bool constrained = std::find(r.constrained.begin(), r.constrained.end(), 1) != r.constrained.end();
+  if(!r.feature_edges.empty() || constrained || r.boundary != Boundary_alignment::NONE)
+    throw Invalid_input_error("singularity_cancellation_radius does not apply with feature edges, constrained faces "
+                              "or boundary alignment: the field it leads to turns only as a whole");
+  if(r.alignment.lambda_given || r.alignment.weight_given)
+    throw Invalid_input_error("singularity_cancellation_radius does not apply with alignment_lambda or "
+                              "alignment_weight: the field it leads to turns only as a whole towards the guidance");
+}
+
 // The named parameters of a field on faces read into a Face_field_request.
 template <typename TriangleMesh, typename NamedParameters, typename FaceDescriptor, typename IndexOfVertex,
           typename ToArray>
@@ -126,6 +146,8 @@ Face_field_request face_field_request(const TriangleMesh& tm, const NamedParamet
     r.prescribed_index = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
                                             num_vertices(tm), index_of, "vertex");
   r.prescribed = !r.prescribed_index.empty();
+  r.cancellation_radius = parameters::choose_parameter(get_parameter(np, internal_np::singularity_cancellation_radius), 0.);
+  check_cancellation_request(r);
   return r;
 }
 
@@ -407,6 +429,18 @@ interior vertices that satisfy Poincare-Hopf are shown exactly.
     \cgalParamType{a range of `std::pair<boost::graph_traits<TriangleMesh>::%vertex_descriptor, int>`, as
                    `singularities_output_iterator` writes them}
     \cgalParamDefault{none: the smoothest (or aligned) field, whose singularities the method places}
+  \cgalParamNEnd
+  \cgalParamNBegin{singularity_cancellation_radius}
+    \cgalParamDescription{fewer singularities: once the smoothest (or aligned) field is computed, each pair of
+                          singular vertices with opposite indices (`k` and `-k`) at most this far apart along the
+                          edges is removed, the closest pairs first, and the field returned is the one of
+                          `prescribed_singularities` with the singularities that remain (user manual, section
+                          \ref SMDF_faces). Quad meshes built on it have fewer irregular vertices. The distance is
+                          a fraction of the length of the diagonal of the mesh's bounding box; 0 removes nothing.
+                          It excludes `prescribed_singularities`, `edge_is_feature_map`, `face_is_constrained_map`,
+                          `boundary_alignment`, `alignment_lambda` and `alignment_weight`}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{singularities_output_iterator}
     \cgalParamDescription{receives, for each interior vertex with a non-zero index, the pair of the vertex and its

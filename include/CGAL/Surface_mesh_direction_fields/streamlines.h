@@ -182,6 +182,11 @@ public:
     const std::size_t nf = data.faces.size();
     m_singular.assign(nf, 0);
     for(const auto& s : data.singularities) if(s.first < nf && s.second != 0) m_singular[s.first] = 1;
+    // a field on faces: its singularities are vertices, the faces around them are left alone
+    std::vector<unsigned char> singular_vertex(data.points.size(), 0);
+    for(const auto& s : data.vertex_singularities) if(s.first < data.points.size() && s.second != 0) singular_vertex[s.first] = 1;
+    for(std::size_t f = 0; f < nf && !data.vertex_singularities.empty(); ++f)
+      for(std::size_t v : data.faces[f]) if(singular_vertex[v]) m_singular[f] = 1;
     m_neighbour = edge_neighbours(data);
     m_normal.resize(nf);
     for(std::size_t f = 0; f < nf; ++f) m_normal[f] = triangle_unit_normal(data.points, data.faces[f]);
@@ -358,7 +363,8 @@ crosses an edge, the direction is carried into the next face by unfolding
 (the rotation about the shared edge taking one face's plane to the other's),
 and the line continues along the direction of that face closest to it (the
 `n`-fold matching). A line stops at a boundary (or non-manifold) edge, on the
-edge of a singular face (it never enters one), on an edge where the next
+edge of a singular face (it never enters one; for a field on faces, a face
+around a singular vertex of `data.vertex_singularities`), on an edge where the next
 face's field points back (the per-face field is discontinuous there: a sink or
 source line), when it reaches
 `options.maximum_length`, in a degenerate face, or when it comes closer than

@@ -68,6 +68,13 @@ triangles. Data, chosen so that a viewer's defaults show the field:
 No array is the active scalars: ParaView's Glyph filter takes them as its
 scale array, so that its default settings would draw no arrows.
 
+A field on faces (`make_face_direction_field_data()`) is written with the
+same points and triangles and the same arrays as cell data: `normals` (the
+face normals), `direction_0` (the active cell vectors: ParaView's Glyph
+filter places its arrows at the triangles' centres), ... `direction_{n-1}`,
+`directions`; its singular vertices are the point data `singularity_index`
+(`k / n` at a singular vertex, 0 elsewhere).
+
 The singularities as markers of their own are written by
 `write_VTK_singularities()`. Coordinates are written with 17 significant
 digits, so that reading back gives the same doubles.
@@ -100,7 +107,7 @@ inline void write_VTU(std::ostream& os, const Direction_field_data& data)
 
 writes the singularities as a legacy VTK file (an `UNSTRUCTURED_GRID`) of
 markers a viewer shows as they are: around the barycentre of each singular
-face a small octahedron (of radius 1/100 of the bounding box's diagonal),
+face (around each singular vertex of a field on faces) a small octahedron (of radius 1/100 of the bounding box's diagonal),
 whose points and triangles carry its index `k / n` as `singularity_index`
 (the active scalars, so that ParaView colours the markers by their index).
 Field data `degree` is `n`. Opened together with the file of `write_VTK()`,
@@ -132,7 +139,9 @@ inline void write_VTU_singularities(std::ostream& os, const Direction_field_data
 \ingroup PkgSurfaceMeshDirectionFieldsIO
 
 reads a file written by `write_VTK()` back: the singular faces are the
-triangles whose `singularity_index` is not 0. The PolyData files of earlier
+triangles whose `singularity_index` is not 0; for a field on faces, the
+per-face directions and the singular vertices (the points whose
+`singularity_index` is not 0). The PolyData files of earlier
 versions are read too (their singular faces recovered by matching each
 singularity point to the barycentre of a face). The per-face directions are
 recomputed by `face_directions()`.
@@ -146,7 +155,14 @@ inline Direction_field_data read_VTK(std::istream& is)
   Direction_field_data data;
   data.degree = internal::read_VTK_degree(is);
   const internal::VTK_cells cells = internal::read_VTK_geometry(is, data);
-  const std::vector<double> singularity_values = internal::read_VTK_data(is, cells, data);
+  const internal::VTK_singularity_values singular = internal::read_VTK_data(is, cells, data);
+  if(!data.face_directions.empty())  // a field on faces
+  {
+    data.directions.clear();
+    internal::singular_vertices_from_points(singular.of_points, data);
+    return data;
+  }
+  const std::vector<double>& singularity_values = singular.of_cells_or_markers;
   // the normals (not stored in the file): angle-weighted, orthogonal to d_0
   using internal::operator-;
   using internal::operator*;

@@ -220,22 +220,38 @@ inline void read_VTK_direction(const std::string& name, const std::vector<double
     data.directions[v][static_cast<std::size_t>(k)] = {values[3 * v], values[3 * v + 1], values[3 * v + 2]};
 }
 
-// POINT_DATA and CELL_DATA: the directions, the magnitudes, and the
-// singularity indices (returned): one per triangle in this version's files,
-// one per singularity point in PolyData files.
-inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cells, Direction_field_data& data)
+// The values of the VTK file's data besides those stored in data: the
+// singularity indices, one per triangle in this version's files of vertex
+// fields, one per singularity point in PolyData files; one per point in the
+// files of fields on faces.
+struct VTK_singularity_values
+{
+  std::vector<double> of_cells_or_markers, of_points;
+};
+
+// POINT_DATA and CELL_DATA: the directions (per point, or per cell for a
+// field on faces), the magnitudes, and the singularity indices.
+inline VTK_singularity_values read_VTK_data(std::istream& is, const VTK_cells& cells, Direction_field_data& data)
 {
   const char* kind = "VTK";
   const std::size_t nv = cells.points - cells.singularities;
   expect(is, "POINT_DATA", kind);
   next_value<std::size_t>(is, kind);
   data.directions.assign(nv, std::vector<Vec3>(static_cast<std::size_t>(data.degree)));
-  std::vector<double> singularity_values;
+  VTK_singularity_values singular;
+  std::vector<double>& singularity_values = singular.of_cells_or_markers;
   std::string word;
   bool cell_data = false;
   while(is >> word)
   {
-    if(word == "VECTORS")  // direction_k of every point (a PolyData file's singularity points last, not kept)
+    if(word == "VECTORS" && cell_data)  // a field on faces: direction_0 of every triangle
+    {
+      if(next_token(is, kind) != "direction_0") throw Invalid_input_error("VTK file: unexpected cell vectors");
+      next_token(is, kind);
+      data.face_directions.resize(cells.faces);
+      for(Vec3& d : data.face_directions) for(double& x : d) x = next_value<double>(is, kind);
+    }
+    else if(word == "VECTORS")  // direction_k of every point (a PolyData file's singularity points last, not kept)
     {
       const std::string name = next_token(is, kind);
       next_token(is, kind);
@@ -262,6 +278,8 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
         if(cell_data && name == "singularity_index" && cells.unstructured && values.size() == cells.faces)
           singularity_values = values;  // one per triangle
         else if(cell_data) continue;
+        else if(name == "singularity_index" && values.size() == cells.points)  // a field on faces
+          singular.of_points = values;
         else if(name == "magnitude" && values.size() == cells.points)
           data.magnitudes.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(nv));
         else if(name.rfind("direction_", 0) == 0 && values.size() == 3 * cells.points)
@@ -276,7 +294,24 @@ inline std::vector<double> read_VTK_data(std::istream& is, const VTK_cells& cell
     else
       throw Invalid_input_error("VTK file: unexpected '" + word + "'");
   }
-  return singularity_values;
+  return singular;
+}
+
+// The integer k of a singularity_index k / n.
+inline int integer_index(double value, int degree)
+{
+  const double k = value * degree;
+  if(!(std::abs(k) < 1e9) || std::abs(k - std::round(k)) > 1e-6)
+    throw Invalid_input_error("VTK file: a singularity_index is not a multiple of 1/n");
+  return static_cast<int>(std::lround(k));
+}
+
+// The singular vertices of a field on faces: the points whose index is not 0.
+inline void singular_vertices_from_points(const std::vector<double>& point_values, Direction_field_data& data)
+{
+  if(point_values.size() != data.points.size()) throw Invalid_input_error("VTK file: no singularity_index per point");
+  for(std::size_t v = 0; v < point_values.size(); ++v)
+    if(const int k = integer_index(point_values[v], data.degree)) data.vertex_singularities.emplace_back(v, k);
 }
 
 // The singular faces of this version's files: the triangles whose index is not 0.
@@ -285,11 +320,9 @@ inline void singular_faces_from_cells(const std::vector<double>& face_values, Di
   if(face_values.size() != data.faces.size()) throw Invalid_input_error("VTK file: no singularity_index per triangle");
   for(std::size_t f = 0; f < face_values.size(); ++f)
   {
-    const double k = face_values[f] * data.degree;
-    if(!(std::abs(k) < 1e9) || std::abs(k - std::round(k)) > 1e-6)
-      throw Invalid_input_error("VTK file: a singularity_index is not a multiple of 1/n");
-    if(std::lround(k) == 0) continue;
-    data.singularities.emplace_back(f, static_cast<int>(std::lround(k)));
+    const int k = integer_index(face_values[f], data.degree);
+    if(k == 0) continue;
+    data.singularities.emplace_back(f, k);
     data.singularity_points.push_back(barycentre(data.points, data.faces[f]));
   }
 }

@@ -63,7 +63,7 @@ struct VTK_grid
   std::vector<long long> connectivity, cell_ends;
   std::vector<int> cell_types;  // 1 vertex, 3 line, 4 poly-line, 5 triangle
   std::vector<VTK_array> point_arrays, cell_arrays;
-  std::string point_scalars, point_vectors, point_normals, cell_scalars;  // active attributes ("" = none)
+  std::string point_scalars, point_vectors, point_normals, cell_scalars, cell_vectors;  // active ("" = none)
 
   void add_cell(std::initializer_list<long long> ids, int type)
   {
@@ -140,7 +140,7 @@ inline void write_legacy_grid(std::ostream& os, const VTK_grid& g)
   write_legacy_cells(w, g);
   // the normals as a plain array: meshio's legacy reader refuses a NORMALS block
   write_legacy_data(w, "POINT_DATA", np, g.point_arrays, g.point_scalars, g.point_vectors, "");
-  write_legacy_data(w, "CELL_DATA", g.cell_count(), g.cell_arrays, g.cell_scalars, "", "");
+  write_legacy_data(w, "CELL_DATA", g.cell_count(), g.cell_arrays, g.cell_scalars, g.cell_vectors, "");
 }
 
 inline void write_XML_arrays(Number_writer& w, const char* block, const std::vector<VTK_array>& arrays,
@@ -172,7 +172,7 @@ inline void write_XML_grid(std::ostream& os, const VTK_grid& g)
     .integer(g.degree).text("</DataArray>\n</FieldData>\n<Piece NumberOfPoints=\"")
     .integer(static_cast<long long>(g.points.size())).text("\" NumberOfCells=\"").integer(g.cell_count()).text("\">\n");
   write_XML_arrays(w, "PointData", g.point_arrays, g.point_scalars, g.point_vectors, g.point_normals);
-  write_XML_arrays(w, "CellData", g.cell_arrays, g.cell_scalars, "", "");
+  write_XML_arrays(w, "CellData", g.cell_arrays, g.cell_scalars, g.cell_vectors, "");
   w.text("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
   for(const Vec3& p : g.points) w.line(p[0], p[1], p[2]);
   w.text("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
@@ -184,6 +184,68 @@ inline void write_XML_grid(std::ostream& os, const VTK_grid& g)
   w.text("</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
 }
 
+// The vertices that belong to a face, in their order, and their new numbers
+// (the points of the datasets below).
+inline std::vector<std::size_t> vertices_of_faces(const Direction_field_data& data, std::vector<std::size_t>& number)
+{
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  number.assign(data.points.size(), none);
+  std::vector<std::size_t> used;
+  for(const auto& t : data.faces) for(std::size_t v : t) number[v] = 0;
+  for(std::size_t v = 0; v < number.size(); ++v)
+    if(number[v] != none) { number[v] = used.size(); used.push_back(v); }
+  return used;
+}
+
+inline void add_mesh(const Direction_field_data& data, const std::vector<std::size_t>& used,
+                     const std::vector<std::size_t>& number, VTK_grid& g)
+{
+  for(std::size_t v : used) g.points.push_back(data.points[v]);
+  for(const auto& t : data.faces)
+    g.add_cell({static_cast<long long>(number[t[0]]), static_cast<long long>(number[t[1]]),
+                static_cast<long long>(number[t[2]])}, 5);
+}
+
+// A field on faces as a dataset: the same points and triangles, the
+// directions and normals as cell data (direction_0 the active cell vectors:
+// ParaView's Glyph filter then places its arrows at the triangles' centres),
+// the singular vertices' k / n as the point data singularity_index.
+inline VTK_grid face_field_grid(const Direction_field_data& data)
+{
+  VTK_grid g;
+  g.title = "direction field of degree " + std::to_string(data.degree) +
+            " on faces (CGAL Surface_mesh_direction_fields)";
+  g.degree = data.degree;
+  const std::size_t n = static_cast<std::size_t>(data.degree);
+  std::vector<std::size_t> number;
+  const std::vector<std::size_t> used = vertices_of_faces(data, number);
+  add_mesh(data, used, number, g);
+  VTK_array normals{"normals", 3, {}}, all{"directions", 3 * data.degree, {}};
+  std::vector<VTK_array> direction(n);
+  for(std::size_t k = 0; k < n; ++k) direction[k] = VTK_array{"direction_" + std::to_string(k), 3, {}};
+  for(std::size_t f = 0; f < data.faces.size(); ++f)
+  {
+    const Vec3 normal = triangle_unit_normal(data.points, data.faces[f]);
+    normals.values.insert(normals.values.end(), normal.begin(), normal.end());
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const Vec3 d = rotated(data.face_directions[f], normal, 2. * CGAL_PI * static_cast<double>(k) / data.degree);
+      direction[k].values.insert(direction[k].values.end(), d.begin(), d.end());
+      all.values.insert(all.values.end(), d.begin(), d.end());
+    }
+  }
+  g.cell_arrays.push_back(std::move(normals));
+  for(VTK_array& a : direction) g.cell_arrays.push_back(std::move(a));
+  g.cell_arrays.push_back(std::move(all));
+  VTK_array index{"singularity_index", 1, std::vector<double>(used.size(), 0.)};
+  for(const auto& s : data.vertex_singularities)
+    if(s.first < number.size() && s.first < data.points.size() && number[s.first] < used.size())
+      index.values[number[s.first]] = static_cast<double>(s.second) / data.degree;
+  g.point_arrays.push_back(std::move(index));
+  g.cell_vectors = "direction_0";
+  return g;
+}
+
 // The field as a dataset: the vertices that belong to a face (renumbered in
 // their order) and the triangles. Every point carries real directions (the
 // singularities are marked on their triangles, not by extra points), and no
@@ -192,18 +254,14 @@ inline void write_XML_grid(std::ostream& os, const VTK_grid& g)
 // it draw none).
 inline VTK_grid field_grid(const Direction_field_data& data)
 {
+  if(holds_field_on_faces(data)) return face_field_grid(data);
   VTK_grid g;
   g.title = "direction field of degree " + std::to_string(data.degree) + " (CGAL Surface_mesh_direction_fields)";
   g.degree = data.degree;
-  const std::size_t none = std::numeric_limits<std::size_t>::max(), n = static_cast<std::size_t>(data.degree);
-  std::vector<std::size_t> number(data.points.size(), none), used;
-  for(const auto& t : data.faces) for(std::size_t v : t) number[v] = 0;
-  for(std::size_t v = 0; v < number.size(); ++v)
-    if(number[v] != none) { number[v] = used.size(); used.push_back(v); }
-  for(std::size_t v : used) g.points.push_back(data.points[v]);
-  for(const auto& t : data.faces)
-    g.add_cell({static_cast<long long>(number[t[0]]), static_cast<long long>(number[t[1]]),
-                static_cast<long long>(number[t[2]])}, 5);
+  const std::size_t n = static_cast<std::size_t>(data.degree);
+  std::vector<std::size_t> number;
+  const std::vector<std::size_t> used = vertices_of_faces(data, number);
+  add_mesh(data, used, number, g);
   VTK_array normals{"normals", 3, {}}, all{"directions", 3 * data.degree, {}}, magnitude{"magnitude", 1, {}};
   std::vector<VTK_array> direction(n);
   for(std::size_t k = 0; k < n; ++k) direction[k] = VTK_array{"direction_" + std::to_string(k), 3, {}};
@@ -248,10 +306,13 @@ inline VTK_grid singularity_marker_grid(const Direction_field_data& data)
     length = std::hypot(std::hypot(diagonal[0], diagonal[1]), diagonal[2]);
   const double radius = 0.01 * length;
   VTK_array point_index{"singularity_index", 1, {}}, cell_index{"singularity_index", 1, {}};
-  for(std::size_t i = 0; i < data.singularities.size(); ++i)
+  // the singular faces' barycentres, or a field on faces' singular vertices
+  std::vector<std::pair<Vec3, int> > singular;
+  for(const auto& s : data.singularities) singular.emplace_back(barycentre(data.points, data.faces[s.first]), s.second);
+  for(const auto& s : data.vertex_singularities) singular.emplace_back(data.points[s.first], s.second);
+  for(const auto& [centre, k] : singular)
   {
-    const double index = static_cast<double>(data.singularities[i].second) / data.degree;
-    const Vec3 centre = barycentre(data.points, data.faces[data.singularities[i].first]);
+    const double index = static_cast<double>(k) / data.degree;
     const long long first = static_cast<long long>(g.points.size());
     for(int axis = 0; axis < 3; ++axis)
       for(double sign : {1., -1.})

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/face_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/face_prescription.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/singularity_cancellation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_inputs.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
@@ -146,6 +147,68 @@ public:
                                       Face_field_answer& answer) const
   {
     if(request.prescribed) return compute_prescribed(request, answer);
+    const Face_direction_field_result optimal = compute_optimal(request, user_solver, answer);
+    if(request.cancellation_radius == 0.) return optimal;
+    return with_cancelled_pairs(request, optimal, answer);
+  }
+
+  const Indexed_mesh& mesh() const { return m_mesh; }
+
+private:
+  // The smoothest (or aligned) field's singular pairs of opposite indices
+  // within the request's radius cancelled (user manual, section "Fields on
+  // Faces"): the parallel field with the singularities that remain, its
+  // timings the sum of both computations. Where that field turns by pi/n or
+  // more across an edge, or so nearly that (readers that recompute the
+  // matching would see other singularities), the cancelled pair nearest that
+  // edge is given back, and the field computed again (a sweep and two solves
+  // on the kept factor).
+  Face_direction_field_result with_cancelled_pairs(const Face_field_request& request,
+                                                   const Face_direction_field_result& optimal,
+                                                   Face_field_answer& answer) const
+  {
+    const Face_field_answer optimal_answer = answer;
+    const std::vector<int>& own = optimal_answer.vertex_index;
+    Face_field_request parallel = request;
+    parallel.prescribed_index = own;
+    std::vector<std::pair<std::size_t, std::size_t> > pairs = cancel_singularity_pairs(
+      m_mesh, request.cancellation_radius * bounding_box_diagonal(m_mesh), parallel.prescribed_index);
+    if(pairs.empty()) return optimal;
+    parallel.prescribed = true;
+    std::vector<unsigned char> doubtful;
+    Face_direction_field_result result = compute_prescribed(parallel, answer, &doubtful);
+    const auto any_doubtful = [&] { return std::find(doubtful.begin(), doubtful.end(), 1) != doubtful.end(); };
+    while(any_doubtful() && !pairs.empty())
+    {
+      std::vector<unsigned char> given_back(pairs.size(), 0);
+      for(std::size_t side = 0; side < doubtful.size(); ++side)
+        if(doubtful[side]) given_back[closest_pair(m_mesh, pairs, m_mesh.vertex_of_corner(side))] = 1;
+      std::vector<std::pair<std::size_t, std::size_t> > still;
+      for(std::size_t i = 0; i < pairs.size(); ++i)
+      {
+        if(!given_back[i]) { still.push_back(pairs[i]); continue; }
+        parallel.prescribed_index[pairs[i].first] = own[pairs[i].first];
+        parallel.prescribed_index[pairs[i].second] = own[pairs[i].second];
+      }
+      pairs.swap(still);
+      if(pairs.empty())
+      {
+        answer = optimal_answer;
+        return optimal;
+      }
+      result = compute_prescribed(parallel, answer, &doubtful);
+    }
+    result.number_of_cancelled_pairs = pairs.size();
+    result.timings.setup_ms += optimal.timings.setup_ms;
+    result.timings.factorization_ms += optimal.timings.factorization_ms;
+    result.timings.solve_ms += optimal.timings.solve_ms;
+    result.timings.total_ms += optimal.timings.total_ms;
+    return result;
+  }
+
+  Face_direction_field_result compute_optimal(const Face_field_request& request, const SparseSolver* user_solver,
+                                              Face_field_answer& answer) const
+  {
     SparseSolver solver = user_solver ? *user_solver : SparseSolver();
     const auto start = Clock::now();
     Face_direction_field_result result;
@@ -177,14 +240,14 @@ public:
     return result;
   }
 
-  const Indexed_mesh& mesh() const { return m_mesh; }
-
-private:
   // The field with the prescribed vertex indices (user manual, section
   // "Fields on Faces"): the parallel section of the least changed dual
   // connection, each component turned as a whole towards its guidance and
   // constraints; the matching and the indices read from the change itself.
-  Face_direction_field_result compute_prescribed(const Face_field_request& request, Face_field_answer& answer) const
+  // `doubtful_sides`, if given, receives a flag per side (corner) where the
+  // matching is not, or only barely, the principal one.
+  Face_direction_field_result compute_prescribed(const Face_field_request& request, Face_field_answer& answer,
+                                                 std::vector<unsigned char>* doubtful_sides = nullptr) const
   {
     const auto start = Clock::now();
     Face_direction_field_result result;
@@ -231,11 +294,28 @@ private:
         std::abs(rotation(side) - face_rotation(theta, m_dual, request.degree, side, m_mesh.twin_corner[side])) > 1e-6;
     });
     for(unsigned char flag : non_principal) result.number_of_non_principal_jumps += flag;
+    if(doubtful_sides) flag_doubtful_sides(theta, request.degree, non_principal, *doubtful_sides);
     write_turning(theta, turning_of_field(m_mesh, m_spaces, m_dual, m_components, theta, request.degree, rotation),
                   request.degree, result, answer);
     result.timings.total_ms = milliseconds_since(start);
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
     return result;
+  }
+
+  // The sides where the matching is not the principal one, and those where
+  // the field turns by so nearly pi/n that a reader recomputing the matching
+  // in its own arithmetic may choose the other one.
+  void flag_doubtful_sides(const std::vector<double>& theta, int n, const std::vector<unsigned char>& non_principal,
+                           std::vector<unsigned char>& doubtful) const
+  {
+    const double margin = 0.05;  // of the n-th power's turn: far above rounding, far below a smooth field's turns
+    doubtful.assign(non_principal.size(), 0);
+    parallel_for_each_index(doubtful.size(), [&](std::size_t side) {
+      const std::size_t twin = m_mesh.twin_corner[side];
+      doubtful[side] = non_principal[side] ||
+                       (twin != no_index && is_representative_side(m_mesh, side) &&
+                        std::abs(face_rotation(theta, m_dual, n, side, twin)) > CGAL_PI - margin);
+    });
   }
 
   // Only interior vertices have an index, and a closed component's indices

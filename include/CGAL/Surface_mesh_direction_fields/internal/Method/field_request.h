@@ -104,6 +104,7 @@ struct Face_field_request
   std::vector<std::array<std::size_t, 2> > feature_edges;  // the two vertices of each feature edge
   bool prescribed = false;
   std::vector<int> prescribed_index;  // k per vertex, when prescribed
+  double cancellation_radius = 0.;    // of opposite singular pairs, a fraction of the bounding box's diagonal
   std::function<bool(double)> progress;
 };
 
