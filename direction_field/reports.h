@@ -177,19 +177,26 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   if(r.mollification > 0.)
     os << "mollification   " << r.mollification << " added to every edge length (degenerate faces)\n";
   if(r.tangent_plane_vertices > 0)
-    os << "folded faces    " << r.tangent_plane_vertices << " vertices laid out in the fitted tangent plane\n";
+    os << "folded faces    " << r.tangent_plane_vertices << " vertices around triangles folded over the surface, "
+       << "measured in the surface's fitted tangent plane so that they add no singularity\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {
     const auto& c = r.components[i];
     os << "component " << std::setw(4) << i << "  " << describe_solve(c) << ", " << c.number_of_singular_faces
        << " singular faces, index sum " << c.index_sum << "/" << r.degree;
     if(c.low_magnitude_fraction > 0.)
-      os << "; " << 100. * c.low_magnitude_fraction << "% of its vertices below the solve's accuracy";
+      os << "; at " << 100. * c.low_magnitude_fraction << "% of its vertices the field is too weak for its "
+         << "directions to be exact";
     os << "\n";
   }
   if(r.components.size() > 10) os << "...             (" << r.components.size() - 10 << " more components)\n";
-  os << "singularities   " << r.number_of_singular_faces << " faces, index sum " << r.index_sum << "/" << r.degree
-     << " (n * chi = " << r.degree * chi << " on a closed mesh)\n"
+  bool closed = true;
+  for(const auto& c : r.components) closed = closed && c.is_closed;
+  os << "singularities   " << r.number_of_singular_faces << " faces, index sum " << r.index_sum << "/" << r.degree;
+  if(closed) os << " (= n times the Euler characteristic, as on every closed mesh)\n";
+  else os << " (with a boundary any sum can occur: n times the Euler characteristic, " << r.degree * chi << "/"
+          << r.degree << ", holds on closed meshes only)\n";
+  os
      << "time            " << std::fixed << std::setprecision(1) << r.timings.total_ms << " ms (setup "
      << r.timings.setup_ms << ", factorization " << r.timings.factorization_ms << ", solve " << r.timings.solve_ms
      << "); files " << timings.io() << " ms (read " << timings.read << ", repair " << timings.repair << ", write "
