@@ -290,7 +290,10 @@ for m, extra in [("cow", ["--align", "curvature", "--feature-angle", "35"]), ("f
 for m in ["camelhead.off", "cow.off", "fertility.off", "plane_holes.off", "torus_oded.off"]:
     if m in meshes:
         prescription_case(m)
-# fewer singularities: vcglib (QuadWild) reads exactly the singular vertices left, on every shared mesh
-for m in meshes:
-    run_case(m[:-4] + "_cancelled", os.path.join(SHARED, m), ["--cancel-singularities", "0.07"])
+# fewer singularities: vcglib (QuadWild) reads exactly the singular vertices left (bones and plane_holes had
+# sides where the parallel field turned so nearly by pi/n that vcglib read other singularities)
+for m in ["bones.off", "camelhead.off", "cow.off", "fertility.off", "plane_holes.off", "spot.off",
+          "stanford_bunny_open.off"]:
+    if m in meshes:
+        run_case(m[:-4] + "_cancelled", os.path.join(SHARED, m), ["--cancel-singularities", "0.07"])
 check.finish()
