@@ -24,6 +24,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -201,7 +202,8 @@ def main():
                         "'--cancel-singularities 0.07'")
     parser.add_argument("--on-remeshed", action="store_true", help="the package's field on QuadWild's own remeshed "
                         "mesh (M_rem.obj of its first step), so that both fields are on one mesh")
-    parser.add_argument("--work", default="/tmp/quad_meshing")
+    parser.add_argument("--work", default=os.path.join(tempfile.gettempdir(), "quad_meshing"),
+                        help="where the runs' files go (default: quad_meshing in the temporary folder)")
     parser.add_argument("--reuse-own", action="store_true", help="take QuadWild's own results from an earlier run "
                         "in the same --work folder (they do not depend on the package)")
     parser.add_argument("--timeout", type=float, default=1800.)

@@ -39,10 +39,8 @@ namespace internal {
 inline double bounding_box_diagonal(const Indexed_mesh& m)
 {
   if(m.points.empty()) return 0.;
-  std::array<double, 3> low = m.points[0], high = m.points[0];
-  for(const auto& p : m.points)
-    for(int i = 0; i < 3; ++i) { low[i] = (std::min)(low[i], p[i]); high[i] = (std::max)(high[i], p[i]); }
-  return norm(Vec3{high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+  const std::array<Vec3, 2> box = bounding_box(m.points);
+  return norm(box[1] - box[0]);
 }
 
 // For the singular vertex `source`, each singular vertex of the opposite
@@ -65,8 +63,7 @@ inline void opposite_singularities_within(const Indexed_mesh& m, const std::vect
     if(d > distance[v]) continue;
     if(v != source && k[v] == -k[source]) pairs.emplace_back(d, source, v);
     m.for_each_neighbour(v, [&](std::size_t u) {
-      const double du = d + norm(Vec3{m.points[u][0] - m.points[v][0], m.points[u][1] - m.points[v][1],
-                                      m.points[u][2] - m.points[v][2]});
+      const double du = d + norm(m.points[u] - m.points[v]);
       if(du > radius || du >= distance[u]) return;
       if(distance[u] == std::numeric_limits<double>::infinity()) reached.push_back(u);
       distance[u] = du;
@@ -105,9 +102,7 @@ inline std::vector<std::pair<std::size_t, std::size_t> > cancel_singularity_pair
 inline std::size_t closest_pair(const Indexed_mesh& m, const std::vector<std::pair<std::size_t, std::size_t> >& pairs,
                                 std::size_t v)
 {
-  auto distance = [&](std::size_t u) {
-    return norm(Vec3{m.points[u][0] - m.points[v][0], m.points[u][1] - m.points[v][1], m.points[u][2] - m.points[v][2]});
-  };
+  auto distance = [&](std::size_t u) { return norm(m.points[u] - m.points[v]); };
   std::size_t best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
   for(std::size_t i = 0; i < pairs.size(); ++i)
