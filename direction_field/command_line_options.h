@@ -47,6 +47,7 @@ struct Options
   std::string curvature_estimate = "quadric-fit";
   double feature_angle = -1.;  // negative: no feature alignment
   unsigned int feature_cleanup = 4;  // --feature-cleanup: steps of erosion and growth of the sharp chains
+  unsigned int neighbors = CGAL::Surface_mesh_direction_fields::default_number_of_neighbors;  // --neighbors: point sets
   double cancel_singularities = 0.;   // --cancel-singularities: the radius, a fraction of the bounding box's diagonal
   std::string solver = "default";
   std::string petsc_options;  // --petsc-options: PETSc's own options, for experts
@@ -71,6 +72,12 @@ struct Option_help
 inline const Option_help option_help[] = {
   {"Field", "MESH", "the mesh: OFF, OBJ, PLY (ASCII or binary) or STL (ASCII or binary); default: CGAL's fandisk.off. "
                     "Read as a polygon soup and repaired when needed (the summary says what changed)"},
+  {"Field", "POINTS", "or a point set: .xyz ('x y z' or 'x y z nx ny nz' per line), .pts ('x y z ...' per line) "
+                      "or a PLY without faces (with or without normals nx ny nz): the field lives on the points, "
+                      "its singularities in the triangles of the points' local triangulations (outputs --directions, "
+                      "--ply, --vtk, --png, --json, --json-file)"},
+  {"Field", "--neighbors K", "with a point set: each point's tangent plane is triangulated with its K nearest "
+                             "points (3 to 1000; default 12)"},
   {"Field", "--degree N", "the number n of directions: 1 vector, 2 line, 4 cross field ... (1 to 1000; default 4)"},
   {"Field", "--s S", "the smoothness parameter in [-1, 1]: -1 follows the intrinsic, +1 the extrinsic "
                      "(shape) connection (default 0)"},
@@ -162,7 +169,7 @@ inline const char* const usage =
   "                       [--guidance FILE] [--lambda L | --alignment-weight T]\n"
   "                       [--constrain-boundary tangent|normal] [--eigenvalue-bound]\n"
   "                       [--curvature-estimate quadric-fit|hopf] [--feature-angle DEG] [--feature-cleanup N]\n"
-  "                       [--cancel-singularities D]\n"
+  "                       [--cancel-singularities D] [--neighbors K]\n"
   "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
   "                       [--singularity-list FILE]"
   " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
@@ -293,6 +300,11 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
     o.cancel_singularities = parse_number<double>(a, v);
     if(!(o.cancel_singularities >= 0. && o.cancel_singularities <= 10.))
       throw Usage_error("--cancel-singularities expects a fraction of the bounding box's diagonal from 0 to 10, got " + v);
+  }
+  else if(a == "--neighbors")
+  {
+    o.neighbors = parse_count(a, v);
+    if(o.neighbors < 3 || o.neighbors > 1000) throw Usage_error("--neighbors expects an integer from 3 to 1000, got " + v);
   }
   else if(a == "--solver") o.solver = v;
   else if(a == "--on") o.on = v;

@@ -27,6 +27,7 @@
 #include "file_io/output_files.h"
 #include "progress.h"
 #include "png_snapshot.h"
+#include "point_set_run.h"
 #include "file_io/read_and_repair_mesh.h"
 #include "reports.h"
 
@@ -593,6 +594,7 @@ static int run(int argc, char** argv)
     exchange_files::check_mesh_out_name(o.mesh_out);
     progress = Progress(o.quiet);
     Program_timings timings;
+    if(point_set_run::is_point_set_file(o.mesh)) return point_set_run::run(o, progress, timings, outputs);
     progress.begin("reading " + o.mesh, timings.read);
     Polygon_soup soup = read_polygon_soup(o.mesh);
     progress.end();

@@ -3,6 +3,7 @@
 // CGAL/Surface_mesh_direction_fields.h). The options are the named
 // parameters of compute_globally_optimal_directions(), in Python's spelling.
 #include "python_files.h"
+#include "python_point_set.h"
 
 PYBIND11_MODULE(_core, m)
 {
@@ -15,6 +16,7 @@ PYBIND11_MODULE(_core, m)
   bind_result(m);
   bind_field(m);
   bind_face_field(m);
+  bind_point_set_field(m);
   bind_files(m);
   m.def("set_openblas_thread_control", &SMDF::set_openblas_thread_control, py::arg("enabled"),
         "Lets the factorization set OpenBLAS's process-wide number of threads to one while its own threads\n"

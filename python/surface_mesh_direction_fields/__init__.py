@@ -70,6 +70,19 @@ def compute_face_directions(V: Any, F: Any, /, **options: Any) -> "FaceField":
     return _core.compute_face_directions(V, F, **options)
 
 
+def _point_set_keywords(*, normals: Any = None, degree: int = 4, s: float = 0.0, neighbors: int = 12,
+                        tolerance: float = 1e-10) -> None:
+    """The keyword arguments of a field on a point set, with the defaults the C++ side applies."""
+
+
+def compute_point_set_directions(P: Any, /, **options: Any) -> "PointSetField":
+    return _core.compute_point_set_directions(P, **options)
+
+
+compute_point_set_directions.__doc__ = _core.compute_point_set_directions.__doc__
+compute_point_set_directions.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+    [inspect.Parameter("P", inspect.Parameter.POSITIONAL_ONLY)] +
+    list(inspect.signature(_point_set_keywords).parameters.values()), return_annotation="PointSetField")
 compute_face_directions.__doc__ = _core.compute_face_directions.__doc__
 compute_face_directions.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
     [inspect.Parameter(name, inspect.Parameter.POSITIONAL_ONLY) for name in ("V", "F")] +

@@ -107,6 +107,34 @@ def compute_face_directions(
     singularity_cancellation_radius: float = 0.0, intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
     tolerance: float = 1e-10, seed: int = 0) -> FaceField: ...
 
+class PointSetField:
+    directions: npt.NDArray[np.float64]          # (N, 3) unit direction per point (zero: in no triangle)
+    normals: npt.NDArray[np.float64]             # (N, 3) the unit normals used
+    magnitudes: npt.NDArray[np.float64]          # (N,) relative to the largest
+    triangles: npt.NDArray[np.int64]             # (T, 3) the local triangulations' triangles
+    holders: npt.NDArray[np.uint8]               # (T,) how many of their points' triangulations hold them
+    on_surface: npt.NDArray[np.bool_]            # (T,) the triangles the singularities are read on
+    singular_triangles: npt.NDArray[np.int64]    # (k, 2): triangle, k (index k / n)
+    degree: int
+    @property
+    def index_sum(self) -> int: ...
+    @property
+    def surface_euler_characteristic(self) -> int: ...
+    @property
+    def surface_is_closed(self) -> bool: ...
+    @property
+    def normals_estimated(self) -> bool: ...
+    @property
+    def points_without_triangles(self) -> int: ...
+    @property
+    def eigenvalues(self) -> List[float]: ...
+    @property
+    def converged(self) -> bool: ...
+
+def compute_point_set_directions(
+    P: npt.ArrayLike, /, *, normals: Optional[npt.ArrayLike] = None, degree: int = 4, s: float = 0.0,
+    neighbors: int = 12, tolerance: float = 1e-10) -> PointSetField: ...
+
 @overload
 def read_mesh(path: Path, *, with_maps: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], Dict[str, int]]: ...
 @overload

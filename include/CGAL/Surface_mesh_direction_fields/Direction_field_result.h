@@ -37,6 +37,11 @@ constexpr int maximum_degree = 1000;
 /// take. The same default holds in the command-line program (`--degree`) and in the Python module (`degree=`).
 constexpr int default_degree = 4;
 
+/// \ingroup PkgSurfaceMeshDirectionFieldsRef
+/// The number of neighbours each point's local triangulation is built from when the named parameter
+/// `number_of_neighbors` is not given (the program's `--neighbors`, Python's `neighbors=`).
+constexpr unsigned int default_number_of_neighbors = 12;
+
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 

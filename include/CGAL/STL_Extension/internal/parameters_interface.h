@@ -54,3 +54,4 @@ CGAL_add_named_parameter(face_guidance_map_t, face_guidance_map, face_guidance_m
 CGAL_add_named_parameter(face_is_constrained_t, face_is_constrained, face_is_constrained_map)
 CGAL_add_named_parameter(face_constrained_direction_map_t, face_constrained_direction_map, face_constrained_direction_map)
 CGAL_add_named_parameter(edge_matching_map_t, edge_matching_map, edge_matching_map)
+CGAL_add_named_parameter(number_of_neighbors_t, number_of_neighbors, number_of_neighbors)

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/field_targets.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
@@ -41,11 +42,6 @@
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
-
-inline double milliseconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 template <typename SparseSolver>
 class Component_fields

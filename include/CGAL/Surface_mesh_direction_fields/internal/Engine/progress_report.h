@@ -17,11 +17,17 @@
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/interruption.h>
 
+#include <chrono>
 #include <functional>
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
+
+inline double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The user's progress_callback of one compute(): told the fraction done at
 // each step and before each solve of the eigen-solve (through

@@ -1,0 +1,226 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_POINT_SET_FIELD_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_POINT_SET_FIELD_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/point_set_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+// The smoothest field of a point set (user manual, "Point Sets"): the
+// triangles of the local triangulations split the points into components
+// (points joined by a triangle), and each component's field is the smallest
+// eigenvector of its pencil (A, M), as on a mesh.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+struct Point_set_component
+{
+  std::vector<std::size_t> points, faces;
+  double eigenvalue = 0., residual = 0.;
+  std::size_t iterations = 0;
+  bool converged = false;
+};
+
+struct Point_set_solution
+{
+  std::vector<Complex> coefficients;  // per point; 0 for a point of no triangle
+  std::vector<Point_set_component> components;
+  std::vector<int> face_index;        // per triangle of the domain
+  double assembly_ms = 0., factorization_ms = 0.;
+};
+
+inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
+{
+  while(parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// The components of the points that belong to a triangle, each with its
+// triangles, in the order of their smallest point.
+inline std::vector<Point_set_component> point_set_components(const Indexed_mesh& m)
+{
+  const std::size_t np = m.number_of_vertices();
+  std::vector<std::size_t> parent(np);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  std::vector<unsigned char> covered(np, 0);
+  for(const auto& t : m.faces)
+    for(int c = 0; c < 3; ++c)
+    {
+      covered[t[c]] = 1;
+      const std::size_t a = find_root(parent, t[c]), b = find_root(parent, t[(c + 1) % 3]);
+      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<Point_set_component> components;
+  std::vector<std::size_t> component_of_root(np, no_point);
+  for(std::size_t p = 0; p < np; ++p)
+  {
+    if(!covered[p]) continue;
+    std::size_t& c = component_of_root[find_root(parent, p)];
+    if(c == no_point)
+    {
+      c = components.size();
+      components.emplace_back();
+    }
+    components[c].points.push_back(p);
+  }
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    components[component_of_root[find_root(parent, m.faces[f][0])]].faces.push_back(f);
+  return components;
+}
+
+template <typename SparseSolver>
+void solve_point_set_component(const Point_set_domain& d, double s, const Eigen_solve_options& options,
+                               SparseSolver& solver, std::vector<std::size_t>& local_index,
+                               Point_set_component& comp, Point_set_solution& solution)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const auto size = static_cast<Eigen::Index>(comp.points.size());
+  for(std::size_t a = 0; a < comp.points.size(); ++a) local_index[comp.points[a]] = a;
+  Complex_sparse_matrix A, M;
+  assemble_point_set(d, comp.faces, local_index, size, s, A, M);
+  solution.assembly_ms += milliseconds_since(start);
+  std::vector<Complex>& coefficients = solution.coefficients;
+  Factored_matrix<SparseSolver> factored(solver);
+  const Eigen_solve_result eig = smallest_eigenpair(A, M, factored, options);
+  if(eig.vector.size() != size) throw Solver_failure_error("the eigen-solve of a point set's component failed");
+  for(std::size_t a = 0; a < comp.points.size(); ++a)
+    coefficients[comp.points[a]] = eig.vector[static_cast<Eigen::Index>(a)];
+  comp.eigenvalue = eig.eigenvalue;
+  comp.residual = eig.residual;
+  comp.iterations = eig.iterations;
+  comp.converged = eig.converged;
+  solution.factorization_ms += eig.factorization_ms;
+}
+
+template <typename SparseSolver>
+Point_set_solution solve_point_set_field(const Point_set_domain& d, double s, const Eigen_solve_options& options,
+                                         SparseSolver& solver)
+{
+  Point_set_solution solution;
+  const std::size_t np = d.triangles.number_of_vertices();
+  solution.coefficients.assign(np, Complex(0., 0.));
+  solution.components = point_set_components(d.triangles);
+  std::vector<std::size_t> local_index(np, no_point);
+  for(Point_set_component& comp : solution.components)
+    solve_point_set_component(d, s, options, solver, local_index, comp, solution);
+  solution.face_index = face_indices(d.triangles, d.connection, solution.coefficients);
+  return solution;
+}
+
+// The directed sides of the triangles, numbered: side_of[3f+c] is the number
+// of the side faces[f][c] -> faces[f][c+1], the same for every triangle that
+// has it; twin[s] is the number of the reverse side, or no_point.
+struct Directed_sides
+{
+  std::vector<std::size_t> side_of, twin;
+};
+
+inline Directed_sides directed_sides(const Indexed_mesh& m)
+{
+  const std::size_t nc = 3 * m.number_of_faces();
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > keyed(nc);
+  for(std::size_t ci = 0; ci < nc; ++ci)
+    keyed[ci] = {{m.vertex_of_corner(ci), m.vertex_of_corner(Indexed_mesh::next_corner(ci))}, ci};
+  std::sort(keyed.begin(), keyed.end());
+  Directed_sides sides;
+  sides.side_of.resize(nc);
+  std::vector<std::pair<std::size_t, std::size_t> > keys;
+  for(const auto& k : keyed)
+  {
+    if(keys.empty() || keys.back() != k.first) keys.push_back(k.first);
+    sides.side_of[k.second] = keys.size() - 1;
+  }
+  sides.twin.resize(keys.size());
+  for(std::size_t s = 0; s < keys.size(); ++s)
+  {
+    const auto reverse = std::make_pair(keys[s].second, keys[s].first);
+    const auto it = std::lower_bound(keys.begin(), keys.end(), reverse);
+    sides.twin[s] = (it != keys.end() && *it == reverse) ? std::size_t(it - keys.begin()) : no_point;
+  }
+  return sides;
+}
+
+// The triangles that make the point set's surface, where its singularities
+// are read: taken in the order of their holders (3, 2, then 1) and then of
+// their number, a triangle joins unless one of its sides, in its direction,
+// is a side of a triangle that joined before. Every side then lies in at most
+// two of them, turned opposite ways: where two local triangulations cut a
+// quadrilateral along different diagonals, only one cut is kept.
+inline std::vector<unsigned char> surface_triangles(const Point_set_domain& d, const Directed_sides& sides)
+{
+  const Indexed_mesh& m = d.triangles;
+  std::vector<std::size_t> order(m.number_of_faces());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&d](std::size_t a, std::size_t b) { return d.holders[a] > d.holders[b]; });
+  std::vector<unsigned char> used(sides.twin.size(), 0), on_surface(m.number_of_faces(), 0);
+  for(std::size_t f : order)
+  {
+    const std::size_t* s = sides.side_of.data() + 3 * f;
+    if(used[s[0]] || used[s[1]] || used[s[2]]) continue;
+    used[s[0]] = used[s[1]] = used[s[2]] = 1;
+    on_surface[f] = 1;
+  }
+  return on_surface;
+}
+
+// The Euler characteristic V - E + F of the surface triangles, and whether
+// they close up (every side in two of them).
+inline std::pair<int, bool> surface_characteristic(const Point_set_domain& d, const Directed_sides& sides,
+                                                   const std::vector<unsigned char>& on_surface)
+{
+  const Indexed_mesh& m = d.triangles;
+  std::vector<unsigned char> used_point(m.number_of_vertices(), 0), used_side(sides.twin.size(), 0);
+  long faces = 0;
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+  {
+    if(!on_surface[f]) continue;
+    ++faces;
+    for(int c = 0; c < 3; ++c)
+    {
+      used_point[m.faces[f][c]] = 1;
+      used_side[sides.side_of[3 * f + c]] = 1;
+    }
+  }
+  long directed = 0, unpaired = 0;
+  for(std::size_t s = 0; s < used_side.size(); ++s)
+  {
+    if(!used_side[s]) continue;
+    ++directed;
+    if(sides.twin[s] == no_point || !used_side[sides.twin[s]]) ++unpaired;
+  }
+  const long edges = (directed + unpaired) / 2;
+  const long vertices = std::count(used_point.begin(), used_point.end(), 1);
+  return {static_cast<int>(vertices - edges + faces), faces > 0 && unpaired == 0};
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_POINT_SET_FIELD_H

@@ -1,0 +1,206 @@
+// compute_point_set_directions(): the field of a point set (C++
+// compute_globally_optimal_point_set_directions()) as numpy arrays: a
+// direction per point, the normals used, the triangles of the local
+// triangulations with their holders, and the singular surface triangles.
+#ifndef SURFACE_MESH_DIRECTION_FIELDS_PYTHON_POINT_SET_H
+#define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_POINT_SET_H
+
+#include "python_options.h"
+
+#include <CGAL/Surface_mesh_direction_fields/globally_optimal_point_set_directions.h>
+
+#include <array>
+#include <vector>
+
+namespace {
+
+struct Point_set_field
+{
+  py::array_t<double> directions, normals, magnitudes;
+  py::array_t<long long> triangles, singular_triangles;
+  py::array_t<unsigned char> holders;
+  py::array_t<bool> on_surface;
+  SMDF::Point_set_direction_field_result report;
+  int degree = SMDF::default_degree;
+};
+
+struct Point_set_options
+{
+  int degree = SMDF::default_degree;
+  double s = 0.;
+  unsigned int neighbors = SMDF::default_number_of_neighbors;
+  double tolerance = 1e-10;
+};
+
+const char* const point_set_option_names[] = {"normals", "degree", "s", "neighbors", "tolerance"};
+
+Point_set_options read_point_set_options(const py::dict& kw)
+{
+  for(const auto& item : kw)
+  {
+    const std::string key = py::cast<std::string>(item.first);
+    if(std::find(std::begin(point_set_option_names), std::end(point_set_option_names), key) ==
+       std::end(point_set_option_names))
+      throw py::type_error("unexpected keyword argument '" + key + "'");
+  }
+  Point_set_options o;
+  if(kw.contains("degree")) o.degree = degree_option(kw["degree"]);
+  if(kw.contains("s")) o.s = option_as<double>(kw["s"], "s", "a number");
+  if(kw.contains("neighbors")) o.neighbors = count_option(kw["neighbors"], "neighbors");
+  if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
+  return o;
+}
+
+template <typename T>
+py::array_t<T> rows_array(std::size_t rows, std::size_t columns)
+{
+  return columns == 1 ? py::array_t<T>({static_cast<py::ssize_t>(rows)})
+                      : py::array_t<T>({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)});
+}
+
+template <typename T>
+void make_read_only(py::array_t<T>& a)
+{
+  a.attr("setflags")(py::arg("write") = false);
+}
+
+void fill_point_set_arrays(const std::vector<Kernel::Vector_3>& directions, Point_set_field& r)
+{
+  const std::size_t np = directions.size(), nt = r.report.triangles.size();
+  r.directions = rows_array<double>(np, 3);
+  r.normals = rows_array<double>(np, 3);
+  r.magnitudes = rows_array<double>(np, 1);
+  r.triangles = rows_array<long long>(nt, 3);
+  r.holders = rows_array<unsigned char>(nt, 1);
+  r.on_surface = rows_array<bool>(nt, 1);
+  r.singular_triangles = rows_array<long long>(r.report.singular_triangles.size(), 2);
+  auto d = r.directions.mutable_unchecked<2>();
+  auto n = r.normals.mutable_unchecked<2>();
+  auto m = r.magnitudes.mutable_unchecked<1>();
+  for(std::size_t i = 0; i < np; ++i)
+  {
+    for(int c = 0; c < 3; ++c)
+    {
+      d(py::ssize_t(i), c) = directions[i][c];
+      n(py::ssize_t(i), c) = r.report.normals[i][c];
+    }
+    m(py::ssize_t(i)) = r.report.magnitudes[i];
+  }
+  auto t = r.triangles.mutable_unchecked<2>();
+  auto h = r.holders.mutable_unchecked<1>();
+  auto on = r.on_surface.mutable_unchecked<1>();
+  for(std::size_t f = 0; f < nt; ++f)
+  {
+    for(int c = 0; c < 3; ++c) t(py::ssize_t(f), c) = static_cast<long long>(r.report.triangles[f][c]);
+    h(py::ssize_t(f)) = r.report.holders[f];
+    on(py::ssize_t(f)) = r.report.on_surface[f] != 0;
+  }
+  auto s = r.singular_triangles.mutable_unchecked<2>();
+  for(std::size_t k = 0; k < r.report.singular_triangles.size(); ++k)
+  {
+    s(py::ssize_t(k), 0) = static_cast<long long>(r.report.singular_triangles[k].first);
+    s(py::ssize_t(k), 1) = r.report.singular_triangles[k].second;
+  }
+  make_read_only(r.directions);
+  make_read_only(r.normals);
+  make_read_only(r.magnitudes);
+  make_read_only(r.triangles);
+  make_read_only(r.holders);
+  make_read_only(r.on_surface);
+  make_read_only(r.singular_triangles);
+}
+
+std::vector<Kernel::Point_3> point_rows(const py::object& P)
+{
+  const Float_array a = real_array(P, "P", "an array of numbers of shape (number of points, 3)");
+  if(a.ndim() != 2 || a.shape(1) != 3) refuse("P must be an array of shape (number of points, 3)");
+  const auto r = a.unchecked<2>();
+  std::vector<Kernel::Point_3> points;
+  for(py::ssize_t i = 0; i < a.shape(0); ++i) points.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  return points;
+}
+
+Point_set_field compute_point_set_directions(const py::object& P, const py::kwargs& kw)
+{
+  const std::vector<Kernel::Point_3> points = point_rows(P);
+  const Point_set_options o = read_point_set_options(kw);
+  std::vector<Kernel::Vector_3> normals;
+  if(kw.contains("normals") && !kw["normals"].is_none())
+  {
+    const Float_array a = rows_of_three(kw["normals"], points.size(), "normals");
+    const auto r = a.unchecked<2>();
+    for(py::ssize_t i = 0; i < a.shape(0); ++i) normals.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  }
+  std::vector<std::size_t> ids(points.size());
+  for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  std::vector<Kernel::Vector_3> directions(points.size(), CGAL::NULL_VECTOR);
+  Point_set_field r;
+  r.degree = o.degree;
+  {
+    py::gil_scoped_release release;
+    const auto np = CGAL::parameters::point_map(CGAL::make_property_map(points))
+                      .degree(o.degree)
+                      .smoothness_parameter(o.s)
+                      .number_of_neighbors(o.neighbors)
+                      .residual_tolerance(o.tolerance);
+    const auto direction_map = CGAL::make_property_map(directions);
+    if(normals.empty())
+      r.report = SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, np);
+    else
+      r.report = SMDF::compute_globally_optimal_point_set_directions(ids, direction_map,
+                                                                     np.normal_map(CGAL::make_property_map(normals)));
+  }
+  fill_point_set_arrays(directions, r);
+  return r;
+}
+
+const char* const point_set_doc =
+  "compute_point_set_directions(P, /, *, normals=None, degree=4, s=0.0, neighbors=12, tolerance=1e-10)\n\n"
+  "The smoothest n-direction field of the points P (N, 3), without a mesh (user manual, 'Point Sets'): each\n"
+  "point's `neighbors` nearest points are triangulated in its tangent plane (normals (N, 3) when given,\n"
+  "estimated by jet fitting otherwise) and the mesh method runs on these local triangulations. Returns a\n"
+  "PointSetField: directions (N, 3; zero for a point in no triangle), normals, magnitudes (N,; 1 at the\n"
+  "largest), triangles (T, 3) with holders (T,: how many of their points' triangulations hold them) and\n"
+  "on_surface (T,: the triangles the singularities are read on), singular_triangles (k, 2: triangle, k; the\n"
+  "index is k / n), and the report (index_sum, surface_euler_characteristic, surface_is_closed, eigenvalues).";
+
+void bind_point_set_field(py::module_& m)
+{
+  py::class_<Point_set_field>(m, "PointSetField", "The field of a point set: read-only arrays and its report.")
+    .def_readonly("directions", &Point_set_field::directions, "(N, 3) unit direction per point (zero: none)")
+    .def_readonly("normals", &Point_set_field::normals, "(N, 3) the unit normals used")
+    .def_readonly("magnitudes", &Point_set_field::magnitudes, "(N,) |u| relative to its largest")
+    .def_readonly("triangles", &Point_set_field::triangles, "(T, 3) int64 triangles of the local triangulations")
+    .def_readonly("holders", &Point_set_field::holders, "(T,) uint8: local triangulations holding each")
+    .def_readonly("on_surface", &Point_set_field::on_surface, "(T,) bool: the surface triangles")
+    .def_readonly("singular_triangles", &Point_set_field::singular_triangles, "(k, 2) int64: triangle, k")
+    .def_readonly("degree", &Point_set_field::degree)
+    .def_property_readonly("index_sum", [](const Point_set_field& r) {
+      long long sum = 0;
+      for(const auto& s : r.report.singular_triangles) sum += s.second;
+      return sum;
+    })
+    .def_property_readonly("surface_euler_characteristic",
+                           [](const Point_set_field& r) { return r.report.surface_euler_characteristic; })
+    .def_property_readonly("surface_is_closed", [](const Point_set_field& r) { return r.report.surface_is_closed; })
+    .def_property_readonly("normals_estimated", [](const Point_set_field& r) { return r.report.normals_estimated; })
+    .def_property_readonly("points_without_triangles",
+                           [](const Point_set_field& r) { return r.report.number_of_points_without_triangles; })
+    .def_property_readonly("eigenvalues", [](const Point_set_field& r) {
+      std::vector<double> values;
+      for(const auto& c : r.report.components) values.push_back(c.eigenvalue);
+      return values;
+    })
+    .def_property_readonly("converged", [](const Point_set_field& r) {
+      bool all = true;
+      for(const auto& c : r.report.components) all = all && c.converged;
+      return all;
+    });
+  m.def("compute_point_set_directions",
+        [](const py::object& P, const py::kwargs& kw) { return compute_point_set_directions(P, kw); }, py::arg("P"),
+        point_set_doc);
+}
+
+} // namespace
+
+#endif // SURFACE_MESH_DIRECTION_FIELDS_PYTHON_POINT_SET_H

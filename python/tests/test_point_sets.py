@@ -1,0 +1,95 @@
+"""Fields on point sets from Python (user manual, "Point Sets"): Poincare-Hopf on
+a sampled sphere, the mesh's field from the mesh's own vertices, the program's
+digits, rigid motions, and the refusals."""
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import surface_mesh_direction_fields as smdf
+
+from shapes import sphere
+
+
+def fibonacci_sphere(n):
+    i = np.arange(n)
+    z = 1 - (2 * i + 1) / n
+    r = np.sqrt(1 - z * z)
+    phi = math.pi * (3 - math.sqrt(5)) * i
+    return np.column_stack([r * np.cos(phi), r * np.sin(phi), z])
+
+
+def test_sphere_index_sum_and_arrays():
+    P = fibonacci_sphere(1500)
+    for n in (1, 4):
+        f = smdf.compute_point_set_directions(P, normals=P, degree=n)
+        assert f.surface_is_closed and f.surface_euler_characteristic == 2
+        assert f.index_sum == 2 * n and int(f.singular_triangles[:, 1].sum()) == 2 * n
+        assert f.directions.shape == (1500, 3) and f.triangles.shape[1] == 3
+        assert np.allclose(np.linalg.norm(f.directions, axis=1), 1.0)
+        assert np.abs(np.sum(f.directions * P, axis=1)).max() < 1e-12  # orthogonal to the given normals
+        assert f.on_surface.dtype == np.bool_ and f.on_surface[f.singular_triangles[:, 0]].all()
+        assert not f.normals_estimated and f.points_without_triangles == 0 and f.converged
+        assert abs(f.eigenvalues[0] - n) < 0.05 * n
+        with pytest.raises(ValueError):
+            f.directions[0, 0] = 1.0  # read-only
+
+
+def test_estimated_normals_and_rigid_motion():
+    P = fibonacci_sphere(1200)
+    f = smdf.compute_point_set_directions(P)
+    assert f.normals_estimated and f.index_sum == 8
+    assert np.abs(np.abs(np.sum(f.normals * P, axis=1)) - 1).max() < 1e-3
+    c, s = math.cos(0.4), math.sin(0.4)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    g = smdf.compute_point_set_directions(1e6 * P @ R.T + [1, 2, 3], normals=P @ R.T)
+    h = smdf.compute_point_set_directions(P, normals=P)
+    assert np.abs(h.directions @ R.T - g.directions).max() < 1e-4
+    assert np.array_equal(h.singular_triangles, g.singular_triangles)
+
+
+def test_mesh_vertices_give_the_mesh_field():
+    V, F = sphere(4)
+    V = V * (1 + 0.2 * np.sin(3 * V[:, :1] + 0.4) * np.cos(2 * V[:, 1:2] + V[:, 2:3]))  # no symmetry
+    mesh = smdf.compute_globally_optimal_directions(V, F)
+    cloud = smdf.compute_point_set_directions(V)
+    assert abs(cloud.eigenvalues[0] - mesh.eigenvalues[0]) < 0.05 * mesh.eigenvalues[0]
+    assert cloud.index_sum == 8
+    N = cloud.normals
+    a = mesh.directions - np.sum(mesh.directions * N, axis=1, keepdims=True) * N
+    turn = 4 * np.arctan2(np.sum(np.cross(a, cloud.directions) * N, axis=1), np.sum(a * cloud.directions, axis=1))
+    off = np.abs(np.angle(np.exp(1j * turn) / np.sum(np.exp(1j * turn)))) / 4  # up to one global turn
+    assert np.mean(off < math.radians(5)) > 0.95
+
+
+def test_same_digits_as_the_program(program, tmp_path):
+    P = fibonacci_sphere(800)
+    np.savetxt(tmp_path / "s.xyz", P, fmt="%.17g")
+    subprocess.run([program, str(tmp_path / "s.xyz"), "--directions", str(tmp_path / "d.txt"), "--json-file",
+                    str(tmp_path / "s.json"), "--quiet"], check=True, stdout=subprocess.DEVNULL)
+    smdf.set_openblas_thread_control(True)  # as the program does: the same digits (test_module.py)
+    f = smdf.compute_point_set_directions(np.loadtxt(tmp_path / "s.xyz"))
+    assert np.array_equal(np.loadtxt(tmp_path / "d.txt"), f.directions)
+    assert json.load(open(tmp_path / "s.json"))["index_sum"] == f.index_sum
+
+
+def test_refusals():
+    P = fibonacci_sphere(100)
+    with pytest.raises(ValueError, match="3 points"):
+        smdf.compute_point_set_directions(P[:2])
+    with pytest.raises(ValueError, match="no triangle"):
+        smdf.compute_point_set_directions(np.column_stack([np.arange(10.0), 2 * np.arange(10.0), np.zeros(10)]))
+    bad = P.copy()
+    bad[5, 1] = np.nan
+    with pytest.raises(ValueError, match="not finite"):
+        smdf.compute_point_set_directions(bad)
+    with pytest.raises(ValueError, match="number_of_neighbors"):
+        smdf.compute_point_set_directions(P, neighbors=2)
+    with pytest.raises(ValueError, match="shape"):
+        smdf.compute_point_set_directions(P, normals=P[:10])
+    with pytest.raises(TypeError, match="unexpected keyword"):
+        smdf.compute_point_set_directions(P, neighbours=8)
+    with pytest.raises(ValueError):
+        smdf.compute_point_set_directions(P[:, :2])
