@@ -244,17 +244,17 @@ inline void write_vtk(std::ostream& os, const Point_field& f, int n)
   for(std::size_t t : surface) os << int(f.result.holders[t]) << '\n';
   os << "POINT_DATA " << np << "\nSCALARS magnitude double 1\nLOOKUP_TABLE default\n";
   for(double m : f.result.magnitudes) os << m << '\n';
-  os << "VECTORS normals double\n";
-  for(const auto& nn : f.result.normals) os << nn[0] << ' ' << nn[1] << ' ' << nn[2] << '\n';
   for(int k = 0; k < n; ++k)
   {
-    os << (k == 0 ? "VECTORS direction_0 double\n" : "VECTORS direction_" + std::to_string(k) + " double\n");
+    os << "VECTORS direction_" << k << " double\n";
     for(std::size_t i = 0; i < np; ++i)
     {
       const Kernel::Vector_3 d = direction_k(f, i, k, n);
       os << d.x() << ' ' << d.y() << ' ' << d.z() << '\n';
     }
   }
+  os << "VECTORS normals double\n";  // after the directions: the first vectors are the active ones
+  for(const auto& nn : f.result.normals) os << nn[0] << ' ' << nn[1] << ' ' << nn[2] << '\n';
 }
 
 // The picture: the surface triangles shaded, the field on the points.

@@ -674,6 +674,7 @@ vtk = open(sys.argv[4]).read()
 for word in ["DATASET UNSTRUCTURED_GRID", "POINTS 1000 double", "SCALARS magnitude", "VECTORS normals",
              "VECTORS direction_0", "VECTORS direction_3", "SCALARS singularity_index", "SCALARS holders"]:
     assert word in vtk, word
+assert vtk.index("VECTORS") == vtk.index("VECTORS direction_0"), "the first vectors (active: ParaView's glyphs) are direction_0"
 assert open(sys.argv[5], "rb").read(8) == b"\x89PNG\r\n\x1a\n"
 EOF
 "$bin" "$out/sphere_n.xyz" --json --directions "$out/sphere_n_dir.txt" > "$out/sphere_n.json"
