@@ -76,8 +76,8 @@ inline const Option_help option_help[] = {
                       "or a PLY without faces (with or without normals nx ny nz): the field lives on the points, "
                       "its singularities in the triangles of the points' local triangulations (outputs --directions, "
                       "--ply, --vtk, --png, --json, --json-file)"},
-  {"Field", "--neighbors K", "with a point set: each point's tangent plane is triangulated with its K nearest "
-                             "points (3 to 1000; default 12)"},
+  {"Field", "--neighbors K", "with a point set: each point's tangent plane is fitted and triangulated with its K "
+                             "nearest points (3 to 1000; default 12; about 24 for noisy scans)"},
   {"Field", "--degree N", "the number n of directions: 1 vector, 2 line, 4 cross field ... (1 to 1000; default 4)"},
   {"Field", "--s S", "the smoothness parameter in [-1, 1]: -1 follows the intrinsic, +1 the extrinsic "
                      "(shape) connection (default 0)"},

@@ -8,6 +8,11 @@ above 10% of its largest (after the one global turn that matches them best:
 a smoothest field is defined up to it) and both compute times.
 
     python3 compare_with_mesh.py --program build/bin/direction_field [--degree 4] MESH.off ...
+
+With --samples N (and --noise S, a fraction of the mean edge length along the
+normal), the points are N random samples of the surface (area-weighted)
+instead of its vertices, each compared with the mesh field at its nearest
+vertex.
 """
 import argparse
 import json
@@ -57,7 +62,24 @@ def share_within(a, b, normals, n, degrees, counted):
     return float(np.mean(off[counted] < math.radians(degrees)))
 
 
-def compare(program, mesh, degree, given_normals, neighbors, work):
+def random_samples(V, F, count, noise, seed=1):
+    rng = np.random.default_rng(seed)
+    fn = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    area = 0.5 * np.linalg.norm(fn, axis=1)
+    f = rng.choice(len(F), count, p=area / area.sum())
+    r1, r2 = np.sqrt(rng.random(count)), rng.random(count)
+    P = ((1 - r1)[:, None] * V[F[f, 0]] + (r1 * (1 - r2))[:, None] * V[F[f, 1]] + (r1 * r2)[:, None] * V[F[f, 2]])
+    edge = np.mean(np.linalg.norm(V[F[:, 1]] - V[F[:, 0]], axis=1))
+    n = fn[f] / np.linalg.norm(fn[f], axis=1, keepdims=True)
+    return P + noise * edge * rng.standard_normal(count)[:, None] * n
+
+
+def nearest_vertex(V, P):
+    from scipy.spatial import cKDTree
+    return cKDTree(V).query(P)[1]
+
+
+def compare(program, mesh, degree, given_normals, neighbors, work, samples=0, noise=0.):
     V, F = read_off(mesh)
     name = os.path.splitext(os.path.basename(mesh))[0]
     mesh_dirs = os.path.join(work, name + "_mesh.txt")
@@ -66,19 +88,24 @@ def compare(program, mesh, degree, given_normals, neighbors, work):
     normals = vertex_normals(V, F)
     xyz = os.path.join(work, name + ".xyz")
     rows = np.hstack([V, normals]) if given_normals else V
+    at = np.arange(len(V))
+    if samples:
+        rows = random_samples(V, F, samples, noise)
+        at = nearest_vertex(V, rows)
     np.savetxt(xyz, rows, fmt="%.17g")
     cloud_dirs = os.path.join(work, name + "_cloud.txt")
     cloud_ply = os.path.join(work, name + "_cloud.ply")
     c = run(program, [xyz, "--degree", str(degree), "--neighbors", str(neighbors), "--directions", cloud_dirs,
                       "--ply", cloud_ply])
-    a, b = np.loadtxt(mesh_dirs), np.loadtxt(cloud_dirs)
+    a, b = np.loadtxt(mesh_dirs)[at], np.loadtxt(cloud_dirs)
     with open(cloud_ply) as f:
         lines = f.read().split("end_header\n")[1].split("\n")
     cloud_normals = np.array([[float(x) for x in l.split()[3:6]] for l in lines if l.strip()])
     magnitude = magnitudes(mesh_mags, len(V))
-    counted = magnitude > 0.1 * magnitude.max()
+    counted = (magnitude > 0.1 * magnitude.max())[at]
     share = share_within(a, b, cloud_normals, degree, 5., counted)
-    print(f"{name}: {len(V)} points, {neighbors} neighbours; singular {c['singular_triangles']} (sum {c['index_sum']}, surface "
+    what = f"{samples} samples, noise {noise}" if samples else f"{len(V)} points"
+    print(f"{name}: {what}, {neighbors} neighbours; singular {c['singular_triangles']} (sum {c['index_sum']}, surface "
           f"{'closed, chi ' + str(c['surface_euler_characteristic']) if c['surface_is_closed'] else 'open'}) against the mesh's "
           f"{m['singular_faces']} (sum {m['index_sum']}); eigenvalue {c['eigenvalue']:.6g} against {m['eigenvalue_bound']:.6g}; "
           f"{100 * share:.1f}% within 5 degrees ({np.count_nonzero(counted)} points counted); "
@@ -103,12 +130,14 @@ def main():
     parser.add_argument("--program", required=True)
     parser.add_argument("--degree", type=int, default=4)
     parser.add_argument("--given-normals", action="store_true")
-    parser.add_argument("--neighbors", type=int, default=16)
+    parser.add_argument("--neighbors", type=int, default=12)
+    parser.add_argument("--samples", type=int, default=0)
+    parser.add_argument("--noise", type=float, default=0.)
     parser.add_argument("meshes", nargs="+")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
         for mesh in args.meshes:
-            compare(args.program, mesh, args.degree, args.given_normals, args.neighbors, work)
+            compare(args.program, mesh, args.degree, args.given_normals, args.neighbors, work, args.samples, args.noise)
     return 0
 
 
