@@ -598,6 +598,8 @@ static int run(int argc, char** argv)
     progress.begin("reading " + o.mesh, timings.read);
     Polygon_soup soup = read_polygon_soup(o.mesh);
     progress.end();
+    if(soup.number_of_polygons() == 0 && !soup.points.empty() && point_set_run::extension_of(o.mesh) == "ply")
+      return point_set_run::run(o, progress, timings, outputs, &soup);
     progress.begin("repairing", timings.repair);
     const Repaired_mesh<Mesh> input = repair_into_mesh<Mesh>(soup, o.mesh);
     soup = Polygon_soup();

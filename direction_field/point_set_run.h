@@ -6,6 +6,7 @@
 
 #include "command_line_options.h"
 #include "file_io/output_files.h"
+#include "file_io/read_polygon_soup.h"
 #include "png_snapshot.h"
 #include "progress.h"
 #include "reports.h"
@@ -41,36 +42,24 @@ inline std::string extension_of(const std::string& path)
   return e;
 }
 
-// Whether the file holds points only: .xyz, .pts, or a PLY whose header
-// declares no face (or zero faces).
+// Whether the file is a point set by its name: .xyz or .pts. A PLY is one
+// when the program's own reader finds no face in it (read_point_set_ply()).
 inline bool is_point_set_file(const std::string& path)
 {
   const std::string e = extension_of(path);
-  if(e == "xyz" || e == "pts") return true;
-  if(e != "ply") return false;
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  bool vertices = false;
-  while(in && std::getline(in, line) && line.rfind("end_header", 0) != 0)
-  {
-    std::istringstream words(line);
-    std::string keyword, element;
-    long long count = 0;
-    words >> keyword >> element >> count;
-    if(keyword != "element") continue;
-    if(element == "vertex") vertices = count > 0;
-    if(element == "face" && count > 0) return false;
-  }
-  return vertices;
+  return e == "xyz" || e == "pts";
 }
 
 // .xyz and .pts: one point per line, 'x y z' and more numbers; in .xyz, the
 // fourth to sixth numbers are the normal when every line has them. A first
 // line with one number (the count of .pts files) and '#' lines are skipped.
+// The bytes come from the mesh reader's read_whole_file() (devices, folders
+// and silent pipes refused as for meshes).
 inline Point_set read_text_points(const std::string& path)
 {
-  std::ifstream in(path);
-  if(!in) throw Usage_error("cannot open '" + path + "': " + std::strerror(errno));
+  std::string bytes = soup_reading::read_whole_file(path, "a point file");
+  soup_reading::prepare_text(bytes, true);
+  std::istringstream in(bytes);
   std::vector<std::vector<double> > rows;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number)
@@ -89,7 +78,8 @@ inline Point_set read_text_points(const std::string& path)
       row.push_back(x);
     }
     if(row.empty() || (number == 1 && row.size() == 1)) continue;
-    if(row.size() < 3) throw Usage_error(path + " line " + std::to_string(number) + ": expected 'x y z', got '" + line + "'");
+    if(row.size() < 3)
+      throw Usage_error(path + " line " + std::to_string(number) + ": expected 'x y z', got '" + line.substr(0, 40) + "'");
     rows.push_back(row);
   }
   bool normals = extension_of(path) == "xyz" && !rows.empty();
@@ -100,18 +90,22 @@ inline Point_set read_text_points(const std::string& path)
     if(normals) points.insert(Kernel::Point_3(r[0], r[1], r[2]), Kernel::Vector_3(r[3], r[4], r[5]));
     else points.insert(Kernel::Point_3(r[0], r[1], r[2]));
   }
+  if(points.size() == 0) throw Usage_error("'" + path + "' holds no point");
   return points;
 }
 
-inline Point_set read_point_set(const std::string& path)
+// A PLY without faces, already read by the program's reader (which checked
+// it): its points, and its normals where the vertices have nx, ny, nz (read
+// again by CGAL's PLY reader, on a file known to be sound).
+inline Point_set read_point_set_ply(const std::string& path, const Polygon_soup& soup)
 {
-  Point_set points;
-  if(extension_of(path) != "ply") points = read_text_points(path);
-  else
-  {
-    std::ifstream in(path, std::ios::binary);
-    if(!in || !CGAL::IO::read_PLY(in, points)) throw Usage_error("cannot read the points of '" + path + "'");
-  }
+  Point_set with_normals;
+  std::ifstream in(path, std::ios::binary);
+  if(in && CGAL::IO::read_PLY(in, with_normals) && with_normals.has_normal_map() &&
+     with_normals.size() == soup.points.size())
+    return with_normals;
+  Point_set points(false);
+  for(const auto& p : soup.points) points.insert(Kernel::Point_3(p[0], p[1], p[2]));
   if(points.size() == 0) throw Usage_error("'" + path + "' holds no point");
   return points;
 }
@@ -332,11 +326,13 @@ inline void write_summary(std::ostream& os, const Options& o, const Point_field&
 }
 
 // The whole run on a point set: read, compute, write, report.
-inline int run(const Options& o, Progress& progress, Program_timings& timings, Output_files& outputs)
+// `soup`: the PLY read by the program's reader, without faces (null for .xyz and .pts).
+inline int run(const Options& o, Progress& progress, Program_timings& timings, Output_files& outputs,
+               const Polygon_soup* soup = nullptr)
 {
   check_point_set_options(o);
   progress.begin("reading the points of " + o.mesh, timings.read);
-  const Point_set points = read_point_set(o.mesh);
+  const Point_set points = soup ? read_point_set_ply(o.mesh, *soup) : read_text_points(o.mesh);
   progress.end();
   double compute_ms = 0.;
   progress.begin("computing the field on the points", compute_ms);

@@ -705,7 +705,8 @@ for refused in "--on faces" "--feature-angle 30" "--align curvature" "--rosy $ou
   check "point set with $refused: exit 1, one line, no output" \
         test $status -eq 1 -a "$(wc -l < "$out/refused.err")" -eq 1 -a ! -e "$out/refused_dir.txt"
 done
-for bad in two line short_line nan empty; do
+mkdir -p "$out/folder.xyz"
+for bad in two line short_line nan empty folder; do
   "$bin" "$out/$bad.xyz" --directions "$out/bad_dir.txt" > /dev/null 2> "$out/bad.err"
   status=$?
   check "bad point set $bad.xyz: exit 1, one line ($(head -c 120 "$out/bad.err"))" \

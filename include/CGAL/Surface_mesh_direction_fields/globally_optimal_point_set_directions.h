@@ -70,10 +70,10 @@ struct Point_set_direction_field_result
   std::vector<Component_report> components;
   /// the points in no triangle: they receive the zero vector
   std::size_t number_of_points_without_triangles = 0;
-  /// the Euler characteristic V - E + F of the surface triangles, and whether every side of one is a side of
-  /// another; where the surface closes, the indices of `singular_triangles` add up to `n` times
-  /// `surface_euler_characteristic` (the user manual says when they may not elsewhere)
+  /// the Euler characteristic V - E + F of the surface triangles; where the surface closes, the indices of
+  /// `singular_triangles` add up to `n` times it (the user manual says when they may not elsewhere)
   int surface_euler_characteristic = 0;
+  /// whether every side of a surface triangle is a side of another one
   bool surface_is_closed = false;
   /// where the time went: `setup_ms` holds the neighbours, the local triangulations and the assembly
   Direction_field_timings timings;
@@ -204,8 +204,6 @@ inline void report_point_set(const Point_set_domain& d, const Point_set_solution
 
 } // namespace internal
 
-inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE {  // see Default_direction_field_solver
-
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
@@ -263,9 +261,16 @@ triangle receives the zero vector.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\returns a `Point_set_direction_field_result`: the normals used, the triangles of the local triangulations and
+         the surface triangles, the singular triangles with their indices, and per component the smallest
+         eigenvalue, the iterations and the residual
+
 \throws Invalid_input_error with fewer than 3 points, a coordinate or normal that is not finite, an option out
         of range, or no triangle at all (all points on a line, or all at one position)
 */
+#ifndef DOXYGEN_RUNNING
+inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE {  // see Default_direction_field_solver
+#endif
 template <typename PointRange, typename PointDirectionMap, typename NamedParameters = parameters::Default_named_parameters>
 Point_set_direction_field_result compute_globally_optimal_point_set_directions(
   const PointRange& points, PointDirectionMap direction_map, const NamedParameters& np = parameters::default_values())
@@ -330,7 +335,9 @@ Point_set_direction_field_result compute_globally_optimal_point_set_directions(
   return result;
 }
 
+#ifndef DOXYGEN_RUNNING
 } // inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE
+#endif
 
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
