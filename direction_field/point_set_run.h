@@ -282,7 +282,7 @@ inline void write_json(std::ostream& os, const Options& o, const Point_field& f,
   bool converged = true;
   for(const auto& c : r.components)
   {
-    if(c.number_of_vertices > largest) { largest = c.number_of_vertices; eigenvalue = c.eigenvalue; }
+    if(c.number_of_vertices > largest) { largest = c.number_of_vertices; eigenvalue = c.eigenvalue.value_or(0.); }
     residual = (std::max)(residual, c.residual);
     iterations = (std::max)(iterations, c.iterations);
     converged = converged && c.converged;
@@ -311,7 +311,7 @@ inline void write_summary(std::ostream& os, const Options& o, const Point_field&
      << r.components.size() << " component" << (r.components.size() == 1 ? "" : "s") << "\n";
   for(std::size_t c = 0; c < r.components.size() && c < 5; ++c)
     os << "  component " << c << ": " << r.components[c].number_of_vertices << " points, eigenvalue "
-       << compact(r.components[c].eigenvalue) << ", " << r.components[c].iterations << " iterations, residual "
+       << compact(r.components[c].eigenvalue.value_or(0.)) << ", " << r.components[c].iterations << " iterations, residual "
        << compact(r.components[c].residual) << "\n";
   os << "degree " << o.degree << ": " << r.singular_triangles.size() << " singular triangles, index sum "
      << index_sum(r) << "/" << o.degree;

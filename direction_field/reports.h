@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <ostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -42,6 +43,9 @@ inline std::string number(double x)
   return os.str();
 }
 
+// A value that may not have been computed (an eigenvalue): null if it was not.
+inline std::string number(const std::optional<double>& x) { return x ? number(*x) : "null"; }
+
 // What gave a component its field, for the JSON ("solves") and the summary.
 inline const char* solve_name(SMDF::Field_solve solve)
 {
@@ -62,10 +66,10 @@ std::string describe_solve(const Report& c)
   if(c.solve == SMDF::Field_solve::LINEAR_SOLVE)
   {
     os << "linear solve (A - lambda_t M) u = M q, lambda_t = " << c.lambda;
-    if(!std::isnan(c.eigenvalue)) os << " (lambda_1 = " << c.eigenvalue << ", " << c.iterations << " iterations)";
+    if(c.eigenvalue) os << " (lambda_1 = " << *c.eigenvalue << ", " << c.iterations << " iterations)";
     return os.str();
   }
-  os << "eigen-solve: eigenvalue " << c.eigenvalue << ", " << c.iterations << " iterations, residual " << c.residual
+  os << "eigen-solve: eigenvalue " << c.eigenvalue.value_or(0.) << ", " << c.iterations << " iterations, residual " << c.residual
      << (c.converged ? "" : " (not converged)");
   return os.str();
 }
@@ -165,7 +169,7 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
   if(main_component(r).alignment_weight > 0. || main_component(r).lambda != 0.)
   {
     os << "alignment       lambda_t = " << main_component(r).lambda;
-    if(!std::isnan(main_component(r).eigenvalue)) os << " (bound lambda_1 = " << main_component(r).eigenvalue << ")";
+    if(main_component(r).eigenvalue) os << " (bound lambda_1 = " << *main_component(r).eigenvalue << ")";
     os << ", alignment weight t = " << main_component(r).alignment_weight << "\n";
   }
   if(r.prescribed)

@@ -265,7 +265,7 @@ void bind_face_field(py::module_& m)
     .def_property_readonly("converged", [](const Face_field_result& r) { return r.report.converged; })
     .def_property_readonly("eigenvalues", [](const Face_field_result& r) {
       std::vector<double> values;
-      for(const auto& c : r.report.components) values.push_back(c.eigenvalue);
+      for(const auto& c : r.report.components) values.push_back(nan_if_absent(c.eigenvalue));
       return values;
     })
     .def_property_readonly("solves", [](const Face_field_result& r) { return solve_names(r.report); },

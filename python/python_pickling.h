@@ -8,12 +8,27 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 
+#include <cmath>
 #include <initializer_list>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace {
+
+// An eigenvalue as Python shows it: nan where it was not computed (see `solves`).
+inline double nan_if_absent(const std::optional<double>& value)
+{
+  return value.value_or(std::numeric_limits<double>::quiet_NaN());
+}
+
+inline std::optional<double> absent_if_nan(double value)
+{
+  if(std::isnan(value)) return std::nullopt;
+  return value;
+}
 
 // Reads the fields of a tuple in order, with a clear error when the state is
 // not one this module wrote.
@@ -97,7 +112,7 @@ SMDF::Direction_field_timings timings_from(const py::tuple& state)
 
 py::tuple component_state(const SMDF::Component_report& c)
 {
-  return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, c.eigenvalue,
+  return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, nan_if_absent(c.eigenvalue),
                         c.lambda, c.alignment_weight, c.iterations, c.residual, c.converged, c.index_sum,
                         c.number_of_singular_faces, c.low_magnitude_fraction, static_cast<int>(c.solve));
 }
@@ -117,7 +132,7 @@ SMDF::Component_report component_from(const py::tuple& state)
   c.number_of_faces = r.next<std::size_t>();
   c.euler_characteristic = r.next<int>();
   c.is_closed = r.next<bool>();
-  c.eigenvalue = r.next<double>();
+  c.eigenvalue = absent_if_nan(r.next<double>());
   c.lambda = r.next<double>();
   c.alignment_weight = r.next<double>();
   c.iterations = r.next<std::size_t>();
@@ -164,7 +179,7 @@ SMDF::Direction_field_result report_from(const py::tuple& state)
 
 py::tuple face_component_state(const SMDF::Face_field_component_report& c)
 {
-  return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, c.eigenvalue,
+  return py::make_tuple(c.number_of_vertices, c.number_of_faces, c.euler_characteristic, c.is_closed, nan_if_absent(c.eigenvalue),
                         c.lambda, c.alignment_weight, c.iterations, c.residual, c.converged, c.index_sum,
                         c.boundary_index, c.number_of_singular_vertices, static_cast<int>(c.solve));
 }
@@ -177,7 +192,7 @@ SMDF::Face_field_component_report face_component_from(const py::tuple& state)
   c.number_of_faces = r.next<std::size_t>();
   c.euler_characteristic = r.next<int>();
   c.is_closed = r.next<bool>();
-  c.eigenvalue = r.next<double>();
+  c.eigenvalue = absent_if_nan(r.next<double>());
   c.lambda = r.next<double>();
   c.alignment_weight = r.next<double>();
   c.iterations = r.next<std::size_t>();

@@ -188,7 +188,7 @@ void bind_point_set_field(py::module_& m)
                            [](const Point_set_field& r) { return r.report.number_of_points_without_triangles; })
     .def_property_readonly("eigenvalues", [](const Point_set_field& r) {
       std::vector<double> values;
-      for(const auto& c : r.report.components) values.push_back(c.eigenvalue);
+      for(const auto& c : r.report.components) values.push_back(nan_if_absent(c.eigenvalue));
       return values;
     })
     .def_property_readonly("converged", [](const Point_set_field& r) {

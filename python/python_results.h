@@ -160,7 +160,7 @@ Result make_result(Field_values values)
     t(static_cast<py::ssize_t>(i), 0) = static_cast<long long>(turns[i].first);
     t(static_cast<py::ssize_t>(i), 1) = turns[i].second;
   }
-  for(const auto& c : values.report.components) r.eigenvalues.push_back(c.eigenvalue);
+  for(const auto& c : values.report.components) r.eigenvalues.push_back(nan_if_absent(c.eigenvalue));
   r.report = std::move(values.report);
   return with_read_only_arrays(std::move(r));
 }

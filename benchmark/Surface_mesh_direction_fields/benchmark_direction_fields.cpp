@@ -268,7 +268,7 @@ int main(int argc, char** argv)
       std::printf("%-22s %8zu %8zu %2d %-7s %11.6g %5zu %4d %4zu %8.1f %8.1f %8.1f %8.1f %8.1f %5.2f %8.1f %7.1f "
                   "%5.2f %5.2f\n",
                   r.mesh.c_str(), r.vertices, r.faces, degree, r.backend.c_str(),
-                  b.components.empty() ? 0. : b.components[0].eigenvalue, b.number_of_singular_faces, b.index_sum,
+                  b.components.empty() ? 0. : b.components[0].eigenvalue.value_or(0.), b.number_of_singular_faces, b.index_sum,
                   b.iterations, b.timings.setup_ms, b.timings.factorization_ms, b.timings.solve_ms, b.timings.total_ms,
                   r.reference_ms, b.timings.total_ms / r.reference_ms, r.again_ms, r.peak_mb, 1024. * r.peak_mb / static_cast<double>(r.vertices),
                   1024. * (r.peak_mb - r.before_mb) / static_cast<double>(r.vertices));
@@ -285,7 +285,7 @@ int main(int argc, char** argv)
   {
     const SMDF::Direction_field_result& b = r.result;
     csv << r.mesh << "," << r.vertices << "," << r.faces << "," << b.components.size() << "," << degree << "," << s
-        << "," << r.backend << "," << (b.components.empty() ? 0. : b.components[0].eigenvalue) << ","
+        << "," << r.backend << "," << (b.components.empty() ? 0. : b.components[0].eigenvalue.value_or(0.)) << ","
         << b.number_of_singular_faces << "," << b.index_sum << "," << b.iterations << "," << b.residual << ","
         << b.timings.setup_ms << "," << b.timings.factorization_ms << "," << b.timings.solve_ms << ","
         << b.timings.total_ms << "," << r.reference_ms << "," << b.timings.total_ms / r.reference_ms << ","

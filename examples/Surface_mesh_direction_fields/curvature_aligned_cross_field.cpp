@@ -37,7 +37,7 @@ int main(int argc, char* argv[])
         .alignment_weight(t)
         .singularities_output_iterator(std::back_inserter(singularities)));
     std::cout << "t = " << r.components[0].alignment_weight << ": lambda_t = " << r.components[0].lambda
-              << " (below lambda_1 = " << r.components[0].eigenvalue << "), " << singularities.size()
+              << " (below lambda_1 = " << *r.components[0].eigenvalue << "), " << singularities.size()
               << " singular faces, index sum " << r.index_sum << "/4\n";
   }
   return EXIT_SUCCESS;

@@ -30,7 +30,7 @@ int main(int argc, char* argv[])
   // The singularities sit in the triangles of the points' local triangulations.
   long index_sum = 0;
   for(const auto& s : result.singular_triangles) index_sum += s.second;
-  std::cout << points.size() << " points, eigenvalue " << result.components[0].eigenvalue << ", "
+  std::cout << points.size() << " points, eigenvalue " << *result.components[0].eigenvalue << ", "
             << result.singular_triangles.size() << " singular triangles, index sum " << index_sum << "/4";
   if(result.surface_is_closed)  // then the sum is 4 times the Euler characteristic
     std::cout << " = 4 x " << result.surface_euler_characteristic;

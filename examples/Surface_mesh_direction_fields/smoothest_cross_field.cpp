@@ -30,7 +30,7 @@ int main(int argc, char* argv[])
     mesh, direction,
     CGAL::parameters::degree(4).singularities_output_iterator(std::back_inserter(singularities)));
 
-  std::cout << "eigenvalue " << result.components[0].eigenvalue << ", "
+  std::cout << "eigenvalue " << *result.components[0].eigenvalue << ", "
             << singularities.size() << " singular faces, index sum " << result.index_sum << "/4\n";
   for(const auto& s : singularities)
     std::cout << "  face " << s.first << ": index " << s.second << "/4\n";

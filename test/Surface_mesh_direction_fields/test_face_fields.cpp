@@ -127,7 +127,7 @@ void check_sphere()
   for(int n : {1, 2, 4})
   {
     const Face_field field = face_field(sphere, params::degree(n));
-    const double lambda = field.result.components[0].eigenvalue;
+    const double lambda = field.result.components[0].eigenvalue.value();
     report.check(std::abs(lambda - n) < 0.02 * n, "sphere, n = " + std::to_string(n) + ": lambda_1 = " +
                                                      std::to_string(lambda) + ", expected about " + std::to_string(n));
     report.check(field.result.index_sum == 2 * n, "sphere: the vertex indices add up to 2n");
@@ -171,7 +171,7 @@ void check_torus_and_disk()
   const Face_field flat = face_field(disk, params::degree(4));
   report.check(flat.result.number_of_singular_vertices == 0, "flat disk: no singular vertex");
   report.check(flat.result.components[0].boundary_index == 4, "flat disk: the boundary contributes n chi = 4");
-  report.check(std::abs(flat.result.components[0].eigenvalue) < 1e-8, "flat disk: lambda_1 = 0");
+  report.check(std::abs(flat.result.components[0].eigenvalue.value()) < 1e-8, "flat disk: lambda_1 = 0");
   check_poincare_hopf(flat, 4, "flat disk");
   const Face_field along = face_field(disk, params::degree(4).boundary_alignment(SMDF::Boundary_alignment::TANGENT));
   check_poincare_hopf(along, 4, "disk along the boundary");
@@ -480,8 +480,38 @@ void check_singularity_cancellation()
 
 } // namespace
 
+// A given lambda_t is in the user's units, as on vertices: the same field on the mesh scaled by 1e-35 with
+// lambda_t / 1e-70, and the report gives back the lambda_t asked for (the engine computes in coordinates
+// normalized at such scales; before the face engine was the vertex one, it took lambda_t in those units).
+void check_lambda_units()
+{
+  Mesh ellipsoid, scaled;
+  make_jittered_ellipsoid(ellipsoid, 3, 1.3, 1., 0.7, 0.05, 3);
+  scaled = ellipsoid;
+  for(Vertex_index v : vertices(scaled)) scaled.point(v) = CGAL::ORIGIN + 1e-35 * (scaled.point(v) - CGAL::ORIGIN);
+  const double lambda_1 = face_field(ellipsoid, params::degree(4)).result.components[0].eigenvalue.value();
+  const double lambda = -0.5 * lambda_1;
+  const auto aligned = [&](const Mesh& mesh, double l) {
+    return face_field(mesh, params::degree(4)
+                              .principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM)
+                              .alignment_lambda(l));
+  };
+  const double scaled_lambda = lambda / (1e-35 * 1e-35);
+  const Face_field unit = aligned(ellipsoid, lambda), small = aligned(scaled, scaled_lambda);
+  report.check(std::abs(unit.result.components[0].lambda / lambda - 1.) < 1e-12 &&
+                 std::abs(small.result.components[0].lambda / scaled_lambda - 1.) < 1e-12,
+               "faces: the report's lambda_t is the one given (" + std::to_string(unit.result.components[0].lambda) +
+                 " for " + std::to_string(lambda) + ")");
+  double worst = 0.;
+  for(std::size_t f = 0; f < unit.directions.size(); ++f)
+    worst = (std::max)(worst, std::sqrt((unit.directions[f] - small.directions[f] / std::sqrt(small.directions[f].squared_length())).squared_length()));
+  report.check(worst < 1e-6 && unit.singular == small.singular,
+               "faces: lambda_t / 1e-70 on the mesh scaled by 1e-35 gives the same field (" + std::to_string(worst) + ")");
+}
+
 int main()
 {
+  check_lambda_units();
   check_sphere();
   check_torus_and_disk();
   check_corner_numbering_invariance();

@@ -243,7 +243,7 @@ static void check_sphere_eigenvalues(Test_report& report)
     {
       const SMDF::Direction_field_result r = SMDF::compute_globally_optimal_directions(
         mesh, dir, CGAL::parameters::degree(n).smoothness_parameter(s).number_of_iterations(300));
-      const double got = r.components[0].eigenvalue * R * R, expected = n * (1. - s);
+      const double got = r.components[0].eigenvalue.value() * R * R, expected = n * (1. - s);
       std::cout << "sphere n = " << n << " s = " << s << ": lambda R^2 = " << got << " (exact " << expected << ")\n";
       report.check(std::abs(got - expected) <= 1.5e-3 * n + 1e-3 * expected,
                    "sphere eigenvalue n (1 - s) / R^2 for n = " + std::to_string(n) + ", s = " + std::to_string(s));
@@ -300,7 +300,8 @@ static void check_assembly_against_scatter(Test_report& report, const std::strin
   const double shift = -0.37;
   std::vector<SI::Shifted_lower_triangle> direct;
   const std::vector<SI::Energy_and_mass> none =
-    SI::assemble_energy_and_mass(m, ts, con, comps, s, std::vector<double>(comps.list.size(), shift), &direct);
+    SI::assemble_energy_and_mass(m, ts, con, comps, s, std::vector<std::optional<double> >(comps.list.size(), shift),
+                                 &direct);
   const SI::Complex_sparse_matrix expected = SI::shifted_lower_triangle(em.energy, em.mass, shift);
   const SI::Complex_sparse_matrix& got = direct[0].matrix;
   report.check(none[0].energy.rows() == 0 && got.rows() == n && got.nonZeros() == expected.nonZeros() &&

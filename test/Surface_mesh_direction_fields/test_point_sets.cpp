@@ -152,8 +152,8 @@ void test_poincare_hopf()
       report.check(sphere.result.components.size() == 1 && sphere.result.number_of_points_without_triangles == 0,
                    "sphere: one component, every point in a triangle");
       // the smallest eigenvalue of the round sphere's energy E_0 tends to n (user manual)
-      report.check(std::abs(sphere.result.components[0].eigenvalue - n) < (N < 1000 ? 0.12 : 0.03) * n,
-                   "sphere: eigenvalue " + std::to_string(sphere.result.components[0].eigenvalue) + " near n");
+      report.check(std::abs(sphere.result.components[0].eigenvalue.value() - n) < (N < 1000 ? 0.12 : 0.03) * n,
+                   "sphere: eigenvalue " + std::to_string(sphere.result.components[0].eigenvalue.value()) + " near n");
     }
     const Cloud_field torus = cloud_field(grid_torus(60, 25, 1., 0.4, 0.3, 7), n);
     report.check(torus.result.surface_is_closed && torus.result.surface_euler_characteristic == 0,
@@ -187,7 +187,7 @@ void test_mesh_vertices()
       mesh_directions.push_back(mesh_dir[v]);
     }
     const double share = share_within(mesh_directions, cloud.directions, cloud.result.normals, n, 5., counted);
-    const double lambda_mesh = mesh_result.components[0].eigenvalue, lambda_cloud = cloud.result.components[0].eigenvalue;
+    const double lambda_mesh = mesh_result.components[0].eigenvalue.value(), lambda_cloud = cloud.result.components[0].eigenvalue.value();
     std::cout << "lumpy sphere, n = " << n << ": " << 100. * share << "% of directions within 5 degrees, eigenvalue "
               << lambda_cloud << " against the mesh's " << lambda_mesh << ", singular " << cloud.result.singular_triangles.size()
               << " against " << singular.size() << std::endl;

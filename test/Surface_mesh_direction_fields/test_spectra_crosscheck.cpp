@@ -78,7 +78,7 @@ static void compare(Test_report& report, const std::string& name, Mesh& mesh, in
   const SI::Components comps = SI::split_into_components(m);
   const SI::Energy_and_mass em = SI::assemble_energy_and_mass(m, ts, con, comps.list[0], comps.local_index, s);
   const double reference = spectra_smallest_eigenvalue(em);
-  const double ours = r.components[0].eigenvalue;
+  const double ours = r.components[0].eigenvalue.value();
   const double scale = em.energy.diagonal().real().sum() / em.mass.diagonal().real().sum();
   // relative to the eigenvalue, or to the spectrum's scale when it is ~0 (flat cases)
   const double err = std::abs(ours - reference) / (std::max)(std::abs(reference), 1e-6 * scale);

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -45,8 +46,7 @@ constexpr unsigned int default_number_of_neighbors = 12;
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
-What gave a component its field (`Component_report::solve`,
-`Face_field_component_report::solve`).
+What gave a component its field (`Component_solve_report::solve`).
 */
 enum class Field_solve
 {
@@ -59,10 +59,12 @@ enum class Field_solve
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
-What the solve found on one connected component of the mesh (components are
-numbered in the order of their smallest vertex index).
+What was solved on one connected component, and the component's shape: the
+part of the report that fields on vertices (`Component_report`) and on faces
+(`Face_field_component_report`) share. Components are numbered in the order
+of their smallest vertex index.
 */
-struct Component_report
+struct Component_solve_report
 {
   /// what gave the component its field
   Field_solve solve = Field_solve::EIGEN_SOLVE;
@@ -74,11 +76,12 @@ struct Component_report
   int euler_characteristic = 0;
   /// `true` if the component has no boundary
   bool is_closed = false;
-  /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$, the upper bound of
-  /// \f$ \lambda_t \f$; NaN where it was not computed: aligned and constrained fields compute it
-  /// only when they need it or `compute_eigenvalue_bound` asks for it, prescribed singularities never. It scales like the
-  /// inverse of an area (it is `n (1 - s) / R^2` on a round sphere of radius `R`)
-  double eigenvalue = 0.;
+  /// smallest eigenvalue \f$ \lambda_1 \f$ of \f$ A u = \lambda M u \f$ (on faces: of the pencil on
+  /// faces), the upper bound of \f$ \lambda_t \f$; empty where it was not computed: aligned and
+  /// constrained fields compute it only when they need it or `compute_eigenvalue_bound` asks for it,
+  /// prescribed singularities never. It scales like the inverse of an area (it is `n (1 - s) / R^2`
+  /// for vertex fields on a round sphere of radius `R`)
+  std::optional<double> eigenvalue;
   /// the \f$ \lambda_t \f$ of the aligned or constrained solve \f$ (A - \lambda_t M) u = M q \f$
   /// (0 for the smoothest field)
   double lambda = 0.;
@@ -87,12 +90,21 @@ struct Component_report
   double alignment_weight = 0.;
   /// number of inverse iterations performed (plus, with `alignment_weight`, the linear solves of the root finding)
   std::size_t iterations = 0;
-  /// final relative residual \f$ \|A u - \lambda M u\| / (s_A \|M u\|) \f$, with
-  /// \f$ s_A = \mathrm{tr}(A) / \mathrm{tr}(M) \f$ (a typical eigenvalue of the pencil)
+  /// final relative residual \f$ \|A u - \lambda M u\| / (s_A \|M u\|) \f$ of the eigen-solve, with
+  /// \f$ s_A = \mathrm{tr}(A) / \mathrm{tr}(M) \f$ (a typical eigenvalue of the pencil); 0 for a direct solve
   double residual = 0.;
   /// `true` if the residual reached the requested tolerance (also `true` for an aligned or
   /// constrained field computed by a direct solve alone, without an eigen-solve)
   bool converged = false;
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+What the solve of a field on vertices found on one connected component of the mesh.
+*/
+struct Component_report : Component_solve_report
+{
   /// sum of the integer indices `k` of the component's faces; equals `n * euler_characteristic`
   /// on a closed component (discrete Poincar&eacute;-Hopf)
   int index_sum = 0;
@@ -178,30 +190,8 @@ struct Direction_field_result
 What the solve of a field on faces found on one connected component
 (`compute_globally_optimal_face_directions()`; user manual, section \ref SMDF_faces).
 */
-struct Face_field_component_report
+struct Face_field_component_report : Component_solve_report
 {
-  /// what gave the component its field
-  Field_solve solve = Field_solve::EIGEN_SOLVE;
-  /// number of vertices of the component
-  std::size_t number_of_vertices = 0;
-  /// number of faces of the component (the unknowns of its problem)
-  std::size_t number_of_faces = 0;
-  /// Euler characteristic \f$ \chi = V - E + F \f$ of the component
-  int euler_characteristic = 0;
-  /// `true` if the component has no boundary
-  bool is_closed = false;
-  /// smallest eigenvalue \f$ \lambda_1 \f$ of the pencil on faces; NaN where it was not computed
-  double eigenvalue = 0.;
-  /// the \f$ \lambda_t \f$ of the aligned or constrained solve (0 for the smoothest field)
-  double lambda = 0.;
-  /// the alignment weight \f$ t = 1 / (1 + \|u\|_M) \f$ achieved (0 without guidance)
-  double alignment_weight = 0.;
-  /// number of inverse iterations (plus the solves of the root finding for an alignment weight)
-  std::size_t iterations = 0;
-  /// final relative residual of the eigen-solve (0 for a direct solve)
-  double residual = 0.;
-  /// `true` if the residual reached the requested tolerance (or the field came from a direct solve)
-  bool converged = false;
   /// sum of the integer indices `k` of the component's interior vertices
   long long index_sum = 0;
   /// the boundary's contribution `B`: `index_sum + B` is `n * euler_characteristic` (0 on a closed

@@ -182,8 +182,8 @@ private:
   enum { finish_request = 0, eigenpair_request = 1, linear_solve_request = 2 };
   // A component with fewer vertices than this per process is solved on the
   // first process whatever the threshold: its share of rows would cost each
-  // process more in collective calls than it saves (20,000 components of 4
-  // vertices each: see benchmark/).
+  // process more in collective calls than it saves (a mesh of many tiny
+  // components would wait on the network for each).
   static constexpr std::size_t minimum_vertices_per_process = 32;
 
   // What every process needs to know of a request.

@@ -125,7 +125,7 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDescription{whether the smallest eigenvalue \f$ \lambda_1 \f$ (the upper bound of \f$ \lambda_t \f$) is
                           computed for aligned and constrained fields too, where the field itself needs it only with
                           `alignment_weight` (or with a solver that cannot tell whether a matrix is positive definite).
-                          When it is not computed, `Component_report::eigenvalue` is NaN.}
+                          When it is not computed, `Component_solve_report::eigenvalue` is empty.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false` (the smoothest field always computes it)}
   \cgalParamNEnd

@@ -18,7 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/Field_engine.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
-// the engine's rooms: the mesh's geometry, the systems of each component, the
+// the engine's parts: the mesh's geometry, the systems of each component, the
 // field of one component, prescribed singularities
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_systems.h>
@@ -46,7 +46,7 @@
 #include <vector>
 
 // The definitions of Field_engine (Field_engine.h): compute() as its named
-// steps over the rooms of this folder.
+// steps over the parts of this folder.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -92,7 +92,7 @@ public:
     // 4. one problem per component: the smallest eigenvector, or the aligned / constrained solve
     Eigen_solve_options options = eigen_solve_options(request);
     options.keep_going = progress.keep_going_test();
-    Component_fields<SparseSolver> fields(m_geometry, m_systems, options, linear_solver, result.timings);
+    Component_fields<Component_systems<SparseSolver> > fields(m_systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_geometry.mesh.number_of_vertices(), Complex(0., 0.));
     answer.magnitudes.assign(u.size(), 0.);
     result.components.resize(m_geometry.components.list.size());
@@ -110,7 +110,7 @@ public:
     store_coefficients(std::move(u), answer);
     for(Component_report& report : result.components)
     {
-      report.eigenvalue = m_geometry.eigenvalue_to_user(report.eigenvalue);
+      if(report.eigenvalue) report.eigenvalue = m_geometry.eigenvalue_to_user(*report.eigenvalue);
       report.lambda = m_geometry.eigenvalue_to_user(report.lambda);
     }
     finish_timings(start, result.timings);
@@ -194,14 +194,17 @@ private:
   }
 
   // The field of component c into u and `magnitudes`; its report into result.components[c].
-  void solve_component(std::size_t c, Component_fields<SparseSolver>& fields, const Field_targets& targets,
+  void solve_component(std::size_t c, Component_fields<Component_systems<SparseSolver> >& fields,
+                       const Field_targets& targets,
                        const Eigen_solve_options& options, Direction_field_result& result, std::vector<Complex>& u,
                        std::vector<double>& magnitudes) const
   {
     const Component& comp = m_geometry.components.list[c];
     Component_report& report = result.components[c];
     describe_component(m_geometry.mesh, comp, report);
-    const Complex_vector field = fields.field_of(c, targets, report);
+    const Complex_vector field = fields.field_of(c, component_guidance(comp, targets.guidance),
+                                                 component_constraints(comp, targets.constraints), targets.alignment,
+                                                 report);
     // a solver that fails without saying so (a user's, or a library's out of
     // memory) must not turn into NaN directions in the outputs
     if(!field.allFinite() || field.size() != static_cast<Eigen::Index>(comp.vertices.size()))
@@ -237,7 +240,6 @@ private:
     for(std::size_t c = 0; c < result.components.size(); ++c)
     {
       describe_component(m_geometry.mesh, m_geometry.components.list[c], result.components[c]);
-      result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
       result.components[c].solve = Field_solve::PARALLEL_SECTION;
       result.components[c].converged = true;
     }

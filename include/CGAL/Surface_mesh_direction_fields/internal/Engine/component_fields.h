@@ -17,78 +17,83 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_systems.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/field_targets.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
-// The engine's third room: the field of one component in one compute(),
-// the smallest eigenvector or the aligned / constrained solve, on the
-// systems of Component_systems (user manual, "The Smoothest Field" and
-// "Aligned and Constrained Fields").
+// The field of one component in one compute(), for fields on vertices and
+// on faces alike: the smallest eigenvector, or the aligned / constrained
+// solve (user manual, "The Smoothest Field" and "Aligned and Constrained
+// Fields", which hold on faces with the matrices of the faces).
+//
+// `Systems` gives each component's linear systems: Component_systems (on
+// vertices) or Face_component_systems (on faces). It provides
+//   Solver, Factorization (a Component_factorization<Solver>), detects_indefinite,
+//   aligned_in_single_precision, unknowns(c), eigenvalue_to_user(lambda),
+//   matrices(c), matrices_of_single_use(c) (null: keep them), mass_times(c, x),
+//   scale(c), factorization(c), release_factorization(c), user_solver(),
+//   certifies_definiteness(c), distributes(c), distributed_eigenpair(c, options)
+//   and distributed_shifted_solve(c, lambda, Mq, constraints, u).
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-template <typename SparseSolver>
+template <typename Systems>
 class Component_fields
 {
+  typedef typename Systems::Solver SparseSolver;
+
 public:
   // `linear_solver`: the solver of the systems with constraints and of the
   // root finding for an alignment weight (a copy of the user's, or a new one)
-  Component_fields(const Mesh_geometry& geometry, Component_systems<SparseSolver>& systems,
-                   const Eigen_solve_options& options, SparseSolver& linear_solver, Direction_field_timings& timings)
-    : m_geometry(geometry), m_systems(systems), m_options(options), m_linear_solver(linear_solver), m_timings(timings)
+  Component_fields(Systems& systems, const Eigen_solve_options& options, SparseSolver& linear_solver,
+                   Direction_field_timings& timings)
+    : m_systems(systems), m_options(options), m_linear_solver(linear_solver), m_timings(timings)
   {}
 
-  // The field of component c (not normalized for the smoothest field,
-  // ||u||_M = 1 otherwise); its report into `report`.
-  Complex_vector field_of(std::size_t c, const Field_targets& targets, Component_report& report)
+  // The field of component c for its guidance q (zero: none) and its
+  // constraints (not normalized for the smoothest field, ||u||_M = 1
+  // otherwise); its report into `report`, eigenvalues in the normalized units.
+  Complex_vector field_of(std::size_t c, const Complex_vector& q, const Constraints& constraints,
+                          const Alignment_request& alignment, Component_solve_report& report)
   {
     bool aligned = false;
-    const Complex_vector Mq = guidance_load(c, targets.guidance, aligned);
-    const Constraints constraints = component_constraints(m_geometry.components.list[c], targets.constraints);
+    const Complex_vector Mq = guidance_load(c, q, aligned);
     const bool constrained = !constraints.empty();
 
     // lambda_1: for the smoothest field, and as the bound of lambda_t when the
     // alignment weight is given (root finding), when it is asked for, or when
     // the solver cannot tell whether A - lambda_t M is positive definite
     const bool smoothest = !aligned && !constrained;
-    const bool needs_eigenvalue =
-      smoothest || targets.alignment.eigenvalue_bound ||
-      (aligned && (targets.alignment.weight_given || !m_systems.certifies_definiteness(c)));
-    report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
+    const bool needs_eigenvalue = smoothest || alignment.eigenvalue_bound ||
+                                  (aligned && (alignment.weight_given || !m_systems.certifies_definiteness(c)));
+    report.eigenvalue.reset();
     report.solve = smoothest ? Field_solve::EIGEN_SOLVE : Field_solve::LINEAR_SOLVE;
     Complex_vector u;
     if(needs_eigenvalue) u = smallest_eigenvector(c, report, !smoothest);
-    if(!smoothest) u = aligned_field(c, Mq, aligned, constraints, targets.alignment, report);
+    if(!smoothest) u = aligned_field(c, Mq, aligned, constraints, alignment, report);
     return u;
   }
 
 private:
-  // M q for component c's guidance q normalized to ||q||_M = 1 (the right-hand
-  // side of the aligned system); `present` tells whether it has any (zero otherwise).
-  Complex_vector guidance_load(std::size_t c, const std::vector<std::complex<double> >& guidance, bool& present)
+  // M q normalized to ||q||_M = 1 (the right-hand side of the aligned
+  // system); `present` tells whether q is not zero.
+  Complex_vector guidance_load(std::size_t c, const Complex_vector& q, bool& present)
   {
-    const Component& comp = m_geometry.components.list[c];
-    const Eigen::Index nc = static_cast<Eigen::Index>(comp.vertices.size());
-    Complex_vector q = Complex_vector::Zero(nc);
     present = false;
-    if(guidance.empty()) return q;
-    for(Eigen::Index i = 0; i < nc; ++i) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
+    if(q.size() == 0 || q.isZero(0.)) return Complex_vector::Zero(static_cast<Eigen::Index>(m_systems.unknowns(c)));
     Complex_vector Mq = m_systems.mass_times(c, q);
     const double q_norm = std::sqrt((std::max)(0., q.dot(Mq).real()));  // dot conjugates its left argument
     present = q_norm > 0.;
@@ -96,31 +101,26 @@ private:
     return Mq;
   }
 
-  // The smallest eigenpair of component c's pencil (A, M) (manual, "The
-  // Smoothest Field"). In a call that keeps nothing, the eigen-solve frees A
-  // and M once it no longer needs them as assembled, unless
+  // The smallest eigenpair of component c's pencil (A, M), the eigenvalue
+  // into `report`. The eigen-solve may free A and M once it no longer needs
+  // them as assembled (Systems::matrices_of_single_use()), unless
   // `matrices_needed_after` (the aligned field that follows reads them).
-  Complex_vector smallest_eigenvector(std::size_t c, Component_report& report, bool matrices_needed_after = true)
+  Complex_vector smallest_eigenvector(std::size_t c, Component_solve_report& report,
+                                      bool matrices_needed_after = true)
   {
     Eigen_solve_result eig;
     if(m_systems.distributes(c))
-    {
-      eig = m_systems.distributed()->smallest_eigenpair(m_systems.assembly_source(c), m_systems.s(), m_options);
-      if(eig.vector.size() != static_cast<Eigen::Index>(m_geometry.components.list[c].vertices.size()))
-        throw Solver_failure_error("the distributed eigen-solve failed on component " + std::to_string(c));
-    }
+      eig = m_systems.distributed_eigenpair(c, m_options);
     else
     {
-      typename Component_systems<SparseSolver>::Factorization& kept = m_systems.factorization(c);
+      typename Systems::Factorization& kept = m_systems.factorization(c);
       Eigen_solve_options options = m_options;
       options.same_pattern = kept.analyzed && !m_systems.user_solver();
       kept.analyzed = true;
       kept.forget_aligned();
-      if(!matrices_needed_after && !m_systems.keeps_factorizations() && !m_systems.user_solver())
-      {
-        Energy_and_mass& em = m_systems.matrices_of_single_use(c);
-        eig = smallest_eigenpair_freeing_matrices(em.energy, em.mass, kept.factored, options);
-      }
+      Energy_and_mass* single_use = matrices_needed_after ? nullptr : m_systems.matrices_of_single_use(c);
+      if(single_use != nullptr)
+        eig = smallest_eigenpair_freeing_matrices(single_use->energy, single_use->mass, kept.factored, options);
       else
       {
         const Energy_and_mass& em = m_systems.matrices(c);
@@ -137,21 +137,21 @@ private:
   }
 
   // The aligned and/or constrained field of component c: (A - lambda_t M) u = M q
-  // with u fixed on the constrained vertices (manual, "Aligned and Constrained
+  // with u fixed on the constrained elements (manual, "Aligned and Constrained
   // Fields"), normalized to ||u||_M = 1.
   Complex_vector aligned_field(std::size_t c, const Complex_vector& Mq, bool aligned, const Constraints& constraints,
-                               const Alignment_request& request, Component_report& report)
+                               const Alignment_request& request, Component_solve_report& report)
   {
     Complex_vector u;
     double lambda = request.lambda;
     std::optional<double> u_mass;  // u^* M u, if computed on the way
-    if(std::isnan(report.eigenvalue)) report.converged = true;  // a direct solve (unless an eigen-solve follows)
+    if(!report.eigenvalue) report.converged = true;  // a direct solve (unless an eigen-solve follows)
     if(aligned && request.weight_given)
     {
       std::size_t evaluations = 0;
       Factored_matrix<SparseSolver> factored(m_linear_solver);
       const Energy_and_mass& em = m_systems.matrices(c);
-      lambda = find_lambda_for_weight(em.energy, em.mass, Mq, constraints, report.eigenvalue, request.weight,
+      lambda = find_lambda_for_weight(em.energy, em.mass, Mq, constraints, *report.eigenvalue, request.weight,
                                       m_systems.scale(c), factored, u, evaluations);
       report.iterations += evaluations;
     }
@@ -160,9 +160,9 @@ private:
     else
     {
       // a lambda_t given (or 0 for a field with constraints only): admissible
-      // when the matrix of the free vertices is positive definite (a solver
+      // when the matrix of the free elements is positive definite (a solver
       // that cannot tell is checked against lambda_1 instead)
-      const bool below_bound = m_systems.certifies_definiteness(c) || !aligned || lambda < report.eigenvalue;
+      const bool below_bound = m_systems.certifies_definiteness(c) || !aligned || lambda < *report.eigenvalue;
       if(!below_bound || !solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, u)) refuse_lambda(c, lambda, report);
     }
     report.lambda = lambda;
@@ -177,16 +177,16 @@ private:
   // unless the solver cannot tell a matrix that is not positive definite
   // and lambda_t is below lambda_1 (an iterative solve that stopped
   // unconverged: the solver's failure, not the input's).
-  [[noreturn]] void refuse_lambda(std::size_t c, double lambda, Component_report& report)
+  [[noreturn]] void refuse_lambda(std::size_t c, double lambda, Component_solve_report& report)
   {
-    if(std::isnan(report.eigenvalue)) smallest_eigenvector(c, report);
-    const std::string lambda_1 = compact_number(m_geometry.eigenvalue_to_user(report.eigenvalue));
-    if(!m_systems.certifies_definiteness(c) && lambda < report.eigenvalue)
+    if(!report.eigenvalue) smallest_eigenvector(c, report);
+    const std::string lambda_1 = compact_number(m_systems.eigenvalue_to_user(*report.eigenvalue));
+    if(!m_systems.certifies_definiteness(c) && lambda < *report.eigenvalue)
       throw Solver_failure_error("the linear solve of component " + std::to_string(c) +
                                  " did not converge (A - lambda_t M is positive definite: lambda_1 = " + lambda_1 + ")");
     throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 = " + lambda_1 +
                               " of component " + std::to_string(c) + " (got " +
-                              compact_number(m_geometry.eigenvalue_to_user(lambda)) + ")");
+                              compact_number(m_systems.eigenvalue_to_user(lambda)) + ")");
   }
 
   // The aligned field with the default lambda_t: 0, as in the paper, in one
@@ -196,17 +196,18 @@ private:
   // as a failed factorization or as a solution whose Rayleigh quotient is
   // tiny (it is then dominated by the eigenvector of lambda_1).
   Complex_vector solve_with_default_lambda(std::size_t c, const Complex_vector& Mq, const Constraints& constraints,
-                                           Component_report& report, double& lambda, std::optional<double>& u_mass)
+                                           Component_solve_report& report, double& lambda,
+                                           std::optional<double>& u_mass)
   {
     const double scale = m_systems.scale(c);
     Complex_vector u;
-    if(std::isnan(report.eigenvalue))
+    if(!report.eigenvalue)
     {
       lambda = 0.;
       if(solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, u))
       {
         // without constraints (A - lambda M) u = M q gives u^* A u = u^* M q + lambda u^* M u
-        // (A itself may have been freed: see factor_aligned_system())
+        // (A itself may have been freed: see Component_systems::factor_aligned_system())
         u_mass = u.dot(m_systems.mass_times(c, u)).real();
         const double rayleigh_quotient = constraints.empty()
                                            ? u.dot(Mq).real() / *u_mass + lambda
@@ -216,40 +217,42 @@ private:
       u_mass.reset();
       smallest_eigenvector(c, report);
     }
-    lambda = (std::min)(0., report.eigenvalue - 1e-6 * scale);
+    lambda = (std::min)(0., *report.eigenvalue - 1e-6 * scale);
     if(!solve_below_smallest_eigenvalue(c, lambda, Mq, constraints, u))
       throw Solver_failure_error("the sparse solver could not factor A - lambda_t M of component " + std::to_string(c));
     return u;
   }
 
-  // u with (A - lambda M) u = Mq on the free vertices of component c, u = c on
+  // u with (A - lambda M) u = Mq on the free elements of component c, u = c on
   // the constrained ones; false if that matrix is not positive definite (as
-  // far as the solver tells). Without constraints the component's kept
-  // factorization is used, and not redone for the lambda it already holds.
+  // far as the solver tells) or the solution is not finite. Without
+  // constraints the component's kept factorization is used, and not redone
+  // for the lambda it already holds.
   bool solve_below_smallest_eigenvalue(std::size_t c, double lambda, const Complex_vector& Mq,
                                        const Constraints& constraints, Complex_vector& u)
   {
-    if(m_systems.distributes(c)) return distributed_shifted_solve(c, lambda, Mq, constraints, u);
+    if(m_systems.distributes(c)) return m_systems.distributed_shifted_solve(c, lambda, Mq, constraints, u);
     const auto start = std::chrono::steady_clock::now();
     if(!constraints.empty())
     {
-      // the matrix of the free vertices has a pattern of its own: a solver of its own
+      // the matrix of the free elements has a pattern of its own: a solver of its own
       const Energy_and_mass& em = m_systems.matrices(c);
       const Shifted_system system(em.energy, em.mass, lambda, constraints);
       Factored_matrix<SparseSolver> factored(m_linear_solver);
-      const bool factored_ok = system.factor(factored, false, m_systems.detects_indefinite);
+      const bool factored_ok = system.factor(factored, false, Systems::detects_indefinite);
       m_timings.factorization_ms += milliseconds_since(start);
       if(factored_ok) u = system.solve(factored, Mq);
-      return factored_ok;
+      return factored_ok && u.allFinite();
     }
-    typename Component_systems<SparseSolver>::Factorization& kept = m_systems.factorization(c);
+    typename Systems::Factorization& kept = m_systems.factorization(c);
     if(kept.refused_lambda == lambda) return false;  // factored and refused already
     if(!(kept.aligned_lambda == lambda))
     {
       const Energy_and_mass& em = m_systems.matrices(c);
       const bool factored_ok =
         kept.factor_aligned(Factored_matrix<SparseSolver>::matrix_to_factor(em.energy, em.mass, -lambda),
-                            kept.analyzed && !m_systems.user_solver(), m_systems.detects_indefinite);
+                            kept.analyzed && !m_systems.user_solver(), Systems::detects_indefinite,
+                            Systems::aligned_in_single_precision);
       kept.analyzed = true;
       if(factored_ok) kept.aligned_lambda = lambda;
       kept.refused_lambda = factored_ok ? std::nullopt : std::optional<double>(lambda);
@@ -257,7 +260,7 @@ private:
       if(!factored_ok) return false;
     }
     // without constraints the system is A - lambda M itself
-    const bool solved = kept.solve_aligned(Mq, u);
+    const bool solved = kept.solve_aligned(Mq, u) && u.allFinite();
     if(!solved)
     {
       kept.forget_aligned();
@@ -267,19 +270,7 @@ private:
     return solved;
   }
 
-  // solve_below_smallest_eigenvalue() over the processes of the distributed
-  // backend: false if conjugate gradients did not converge.
-  bool distributed_shifted_solve(std::size_t c, double lambda, const Complex_vector& Mq,
-                                 const Constraints& constraints, Complex_vector& u)
-  {
-    Eigen_solve_options options;
-    const Distributed_solve_report r = m_systems.distributed()->shifted_solve(m_systems.assembly_source(c), m_systems.s(),
-                                                                               lambda, Mq, constraints, options, u);
-    return r.converged && u.size() == Mq.size();
-  }
-
-  const Mesh_geometry& m_geometry;
-  Component_systems<SparseSolver>& m_systems;
+  Systems& m_systems;
   const Eigen_solve_options& m_options;
   SparseSolver& m_linear_solver;
   Direction_field_timings& m_timings;

@@ -15,6 +15,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/mesh_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
@@ -27,10 +28,11 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
-// The engine's second room: the linear systems of each component (user
+// The linear systems of each vertex field's components (user
 // manual, "The Smoothest Field" and "Aligned and Constrained Fields") and
 // what is kept of them between fields. The matrices A and M belong to one
 // connection degree n and one s; a factorization knows which matrix it
@@ -60,13 +62,13 @@ struct Component_factorization
   Complex_sparse_matrix refinement_matrix;
 
   // Factors S = lower(A - lambda_t M) for an aligned field: in single
-  // precision where the solver can (each solve is then refined to double
-  // precision), in double precision otherwise; false if S is not positive
-  // definite (`check`; otherwise a failure throws, as factor() does).
-  bool factor_aligned(Complex_sparse_matrix S, bool same_pattern, bool check = true)
+  // precision where the solver can and `single_allowed` (each solve is then
+  // refined to double precision), in double precision otherwise; false if S
+  // is not positive definite (`check`; otherwise a failure throws, as factor() does).
+  bool factor_aligned(Complex_sparse_matrix S, bool same_pattern, bool check = true, bool single_allowed = true)
   {
     forget_aligned();
-    factored.allow_single_precision(Factored_matrix<SparseSolver>::factors_lower_triangle);
+    factored.allow_single_precision(single_allowed && Factored_matrix<SparseSolver>::factors_lower_triangle);
     bool factored_ok = true;
     if(check) factored_ok = factored.factor_if_positive_definite(S, same_pattern);
     else factored.factor(S, same_pattern);
@@ -111,6 +113,7 @@ template <typename SparseSolver>
 class Component_systems
 {
 public:
+  typedef SparseSolver Solver;
   typedef Component_factorization<SparseSolver> Factorization;
   static constexpr bool detects_indefinite = Factored_matrix<SparseSolver>::detects_indefinite;
 
@@ -155,8 +158,8 @@ public:
   const Connection& connection() const { return m_connection; }
 
   // A and M of every component for n and s, unless they are those already.
-  // `shifts` (see shift_only()) asks for lower(A + shift M) alone where not NaN.
-  void update_matrices(int degree, double s, const std::vector<double>& shifts = {})
+  // `shifts` (see shift_only()) asks for lower(A + shift M) alone where given.
+  void update_matrices(int degree, double s, const std::vector<std::optional<double> >& shifts = {})
   {
     update_connection(degree);
     if(m_matrices_s == s) return;
@@ -180,17 +183,6 @@ public:
       em = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_connection,
                                     m_geometry.components.list[c], m_geometry.components.local_index, s());
     return em;
-  }
-
-  // A and M of component c for a use that frees them (the eigen-solve of a
-  // call that keeps nothing); matrices() assembles them again if asked for.
-  // Assembled first if the assembly gave only the matrix of an aligned
-  // system (a guidance that then vanished); their scale is kept (see scale()).
-  Energy_and_mass& matrices_of_single_use(std::size_t c)
-  {
-    matrices(c);
-    scale(c);
-    return m_matrices[c];
   }
 
   // trace(A) / trace(M) of component c (eigenvalue_scale()), kept while A
@@ -234,16 +226,51 @@ public:
             &m_geometry.components.local_index};
   }
 
-  // The shift per component (NaN: none) for which the assembly gives only
+  // The unknowns of component c: its vertices.
+  std::size_t unknowns(std::size_t c) const { return m_geometry.components.list[c].vertices.size(); }
+  double eigenvalue_to_user(double lambda) const { return m_geometry.eigenvalue_to_user(lambda); }
+  // Whether the aligned systems are factored in single precision where the solver can (refined solves).
+  static constexpr bool aligned_in_single_precision = true;
+
+  // The smallest eigenpair of a component that distributes(); throws if the backend failed.
+  Eigen_solve_result distributed_eigenpair(std::size_t c, const Eigen_solve_options& options) const
+  {
+    Eigen_solve_result eig = m_call.distributed->smallest_eigenpair(assembly_source(c), s(), options);
+    if(eig.vector.size() != static_cast<Eigen::Index>(unknowns(c)))
+      throw Solver_failure_error("the distributed eigen-solve failed on component " + std::to_string(c));
+    return eig;
+  }
+
+  // (A - lambda M) u = Mq on the free vertices of a component that
+  // distributes() (conjugate gradients over the processes): false if it did not converge.
+  bool distributed_shifted_solve(std::size_t c, double lambda, const Complex_vector& Mq,
+                                 const Constraints& constraints, Complex_vector& u) const
+  {
+    const Distributed_solve_report r =
+      m_call.distributed->shifted_solve(assembly_source(c), s(), lambda, Mq, constraints, Eigen_solve_options(), u);
+    return r.converged && u.size() == Mq.size();
+  }
+
+  // A and M of component c when the eigen-solve may free them (a call that
+  // keeps nothing, with the package's solver), else null.
+  Energy_and_mass* matrices_of_single_use(std::size_t c)
+  {
+    if(keeps_factorizations() || user_solver()) return nullptr;
+    matrices(c);
+    scale(c);  // kept beyond the matrices
+    return &m_matrices[c];
+  }
+
+  // The shift per component (if any) for which the assembly gives only
   // the lower triangle of A + shift M, without A and M: the components whose
   // aligned system is factored before the guidance (`early`), in a call that
   // keeps no factorization, with a solver that reads that triangle only.
-  std::vector<double> shift_only(const std::vector<std::size_t>& early, double lambda) const
+  std::vector<std::optional<double> > shift_only(const std::vector<std::size_t>& early, double lambda) const
   {
-    std::vector<double> shifts;
+    std::vector<std::optional<double> > shifts;
     if(m_call.keep_factorizations || !Factored_matrix<SparseSolver>::factors_lower_triangle || early.empty())
       return shifts;
-    shifts.assign(m_geometry.components.list.size(), std::numeric_limits<double>::quiet_NaN());
+    shifts.assign(m_geometry.components.list.size(), std::nullopt);
     for(std::size_t c : early) shifts[c] = -lambda;
     return shifts;
   }

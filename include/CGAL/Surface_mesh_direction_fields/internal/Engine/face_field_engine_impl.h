@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
@@ -37,7 +38,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -209,7 +209,7 @@ private:
   Face_direction_field_result compute_optimal(const Face_field_request& request, const SparseSolver* user_solver,
                                               Face_field_answer& answer) const
   {
-    SparseSolver solver = user_solver ? *user_solver : SparseSolver();
+    SparseSolver linear_solver = user_solver ? *user_solver : SparseSolver();
     const auto start = Clock::now();
     Face_direction_field_result result;
     result.degree = request.degree;
@@ -225,13 +225,27 @@ private:
     options.random_seed = request.random_seed;
     options.keep_going = progress.keep_going_test();
     options.transport_in_energy = true;
+    Alignment_request alignment = request.alignment;
+    alignment.lambda /= m_length_scale * m_length_scale;  // to the normalized coordinates' units
+    Face_component_systems<SparseSolver> systems(m_components, m_length_scale, user_solver);
+    Component_fields<Face_component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_mesh.number_of_faces(), Complex(0., 0.));
     result.components.resize(m_components.list.size());
     result.timings.setup_ms = milliseconds_since(start);
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
     {
       progress.reached(0.1 + 0.9 * static_cast<double>(c) / static_cast<double>(m_components.list.size()));
-      solve_component(c, request, guidance, constraints, options, solver, result, u);
+      const Component& comp = m_components.list[c];
+      const auto assembly_start = Clock::now();
+      systems.set_matrices(c, face_energy_and_mass(m_mesh, m_spaces, m_dual, comp, request.degree,
+                                                   local_face_numbers(comp, m_mesh.number_of_faces())));
+      result.timings.setup_ms += milliseconds_since(assembly_start);
+      Face_field_component_report& report = result.components[c];
+      describe(comp, report);
+      const Complex_vector x = solve_component(c, guidance, constraints, alignment, fields, report);
+      for(std::size_t i = 0; i < comp.faces.size(); ++i) u[comp.faces[i]] = x[static_cast<Eigen::Index>(i)];
+      if(report.eigenvalue) report.eigenvalue = systems.eigenvalue_to_user(*report.eigenvalue);
+      report.lambda = systems.eigenvalue_to_user(report.lambda);
     }
     progress.reached(1.);
     write_answer(u, request.degree, result, answer);
@@ -258,7 +272,6 @@ private:
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
     {
       describe(m_components.list[c], result.components[c]);
-      result.components[c].eigenvalue = std::numeric_limits<double>::quiet_NaN();
       result.components[c].solve = Field_solve::PARALLEL_SECTION;
       result.components[c].converged = true;
     }
@@ -364,16 +377,14 @@ private:
     }
   }
 
-  void solve_component(std::size_t c, const Face_field_request& request, const std::vector<Complex>& guidance,
-                       const std::vector<Complex>& constraint_values, const Eigen_solve_options& options,
-                       SparseSolver& solver, Face_direction_field_result& result, std::vector<Complex>& u) const
+  // Component c's field (Component_fields: as on vertices, with A and M of
+  // the faces) for its share of the guidance and constraints.
+  Complex_vector solve_component(std::size_t c, const std::vector<Complex>& guidance,
+                                 const std::vector<Complex>& constraint_values, const Alignment_request& alignment,
+                                 Component_fields<Face_component_systems<SparseSolver> >& fields,
+                                 Face_field_component_report& report) const
   {
     const Component& comp = m_components.list[c];
-    const std::vector<std::size_t> local = local_face_numbers(comp, m_mesh.number_of_faces());
-    const auto start = Clock::now();
-    const Face_energy_and_mass em =
-      face_energy_and_mass(m_mesh, m_spaces, m_dual, comp, request.degree, local);
-    result.timings.setup_ms += milliseconds_since(start);
     const Eigen::Index nf = static_cast<Eigen::Index>(comp.faces.size());
     Complex_vector q(nf);
     Constraints constraints;
@@ -386,13 +397,14 @@ private:
       constraints.is_constrained[static_cast<std::size_t>(i)] = constraint_values[f] != Complex(0., 0.);
       constraints.values[i] = constraint_values[f];
     }
-    Face_field_component_report& report = result.components[c];
-    describe(comp, report);
-    const Complex_vector x = field_of_component(em, q, constraints, request.alignment, options, solver, report,
-                                                result.timings);
-    for(Eigen::Index i = 0; i < nf; ++i) u[comp.faces[static_cast<std::size_t>(i)]] = x[i];
-    report.eigenvalue *= m_length_scale * m_length_scale;
-    report.lambda *= m_length_scale * m_length_scale;
+    if(nf > 1) return fields.field_of(c, q, constraints, alignment, report);
+    // a lone face has no energy: its constraint, its guidance, or its first side
+    const bool constrained = !constraints.empty(), aligned = q[0] != Complex(0., 0.);
+    report.solve = aligned || constrained ? Field_solve::LINEAR_SOLVE : Field_solve::EIGEN_SOLVE;
+    report.eigenvalue = 0.;
+    report.converged = true;
+    const Complex value = constrained ? constraints.values[0] : aligned ? q[0] : Complex(1., 0.);
+    return Complex_vector::Constant(1, value / std::abs(value));
   }
 
   void describe(const Component& comp, Face_field_component_report& report) const
@@ -407,102 +419,6 @@ private:
                                                    static_cast<long long>(edges) +
                                                    static_cast<long long>(comp.faces.size()));
     report.is_closed = border_sides == 0;
-  }
-
-  // The smallest eigenvector (no guidance, no constraint), else the aligned /
-  // constrained solve of (A - lambda_t M) u = M q (user manual, sections "The
-  // Smoothest Field" and "Aligned and Constrained Fields", which hold on faces
-  // with A and M of the faces).
-  Complex_vector field_of_component(const Face_energy_and_mass& em, const Complex_vector& q,
-                                    const Constraints& constraints, const Alignment_request& alignment,
-                                    const Eigen_solve_options& options, SparseSolver& solver,
-                                    Face_field_component_report& report, Direction_field_timings& timings) const
-  {
-    Complex_vector Mq = em.mass * q;
-    const double q_norm = std::sqrt((std::max)(0., q.dot(Mq).real()));
-    const bool aligned = q_norm > 0., constrained = !constraints.empty();
-    if(aligned) Mq /= q_norm;
-    report.eigenvalue = std::numeric_limits<double>::quiet_NaN();
-    report.solve = aligned || constrained ? Field_solve::LINEAR_SOLVE : Field_solve::EIGEN_SOLVE;
-    report.converged = true;
-    auto eigen_solve = [&] {
-      Factored_matrix<SparseSolver> factored(solver);
-      Eigen_solve_result eig = smallest_eigenpair(em.energy, em.mass, factored, options);
-      timings.factorization_ms += eig.factorization_ms;
-      report.eigenvalue = eig.eigenvalue;
-      report.iterations += eig.iterations;
-      report.residual = eig.residual;
-      report.converged = eig.converged;
-      return std::move(eig.vector);
-    };
-    if(em.energy.rows() == 1)
-    {
-      // a lone face has no energy: its constraint, its guidance, or its first side
-      report.eigenvalue = 0.;
-      const Complex value = constrained ? constraints.values[0] : aligned ? q[0] : Complex(1., 0.);
-      return Complex_vector::Constant(1, value / std::abs(value));
-    }
-    if(!aligned && !constrained) return eigen_solve();
-    if(aligned && alignment.weight_given)
-    {
-      eigen_solve();
-      Factored_matrix<SparseSolver> factored(solver);
-      Complex_vector u;
-      std::size_t evaluations = 0;
-      report.lambda = find_lambda_for_weight(em.energy, em.mass, Mq, constraints, report.eigenvalue,
-                                             alignment.weight, eigenvalue_scale(em.energy, em.mass), factored, u,
-                                             evaluations);
-      report.iterations += evaluations;
-      return normalized_aligned(em, u, aligned, report);
-    }
-    double lambda = alignment.lambda_given ? alignment.lambda : 0.;
-    Complex_vector u;
-    if(!shifted_solve(em, lambda, Mq, constraints, solver, u, timings) ||
-       (!alignment.lambda_given && !constrained && nearly_flat(em, u, Mq, lambda)))
-    {
-      if(alignment.lambda_given)
-        throw Invalid_input_error("alignment_lambda must be below the smallest eigenvalue lambda_1 of every "
-                                  "component of the field on faces (got " + compact_number(lambda) + ")");
-      // lambda_1 is (nearly) 0: a flat or developable component, as for vertex fields
-      eigen_solve();
-      lambda = (std::min)(0., report.eigenvalue - 1e-6 * eigenvalue_scale(em.energy, em.mass));
-      if(!shifted_solve(em, lambda, Mq, constraints, solver, u, timings))
-        throw Solver_failure_error("the sparse solver could not factor A - lambda_t M of a field on faces");
-    }
-    report.lambda = lambda;
-    return normalized_aligned(em, u, aligned, report);
-  }
-
-  // Without constraints (A - lambda M) u = M q gives u^* A u = u^* M q + lambda u^* M u: a tiny
-  // Rayleigh quotient means the solution is dominated by an eigenvector of lambda_1 ~ 0.
-  static bool nearly_flat(const Face_energy_and_mass& em, const Complex_vector& u, const Complex_vector& Mq,
-                          double lambda)
-  {
-    const double u_mass = u.dot(em.mass * u).real();
-    const double rayleigh_quotient = u.dot(Mq).real() / u_mass + lambda;
-    return !(rayleigh_quotient >= 1e-10 * eigenvalue_scale(em.energy, em.mass));
-  }
-
-  static bool shifted_solve(const Face_energy_and_mass& em, double lambda, const Complex_vector& Mq,
-                            const Constraints& constraints, SparseSolver& solver, Complex_vector& u,
-                            Direction_field_timings& timings)
-  {
-    const auto start = Clock::now();
-    const Shifted_system system(em.energy, em.mass, lambda, constraints);
-    Factored_matrix<SparseSolver> factored(solver);
-    const bool ok = system.factor(factored, false, Factored_matrix<SparseSolver>::detects_indefinite);
-    timings.factorization_ms += milliseconds_since(start);
-    if(ok) u = system.solve(factored, Mq);
-    return ok && u.allFinite();
-  }
-
-  static Complex_vector normalized_aligned(const Face_energy_and_mass& em, Complex_vector u, bool aligned,
-                                           Face_field_component_report& report)
-  {
-    const double u_norm = m_norm(em.mass, u);
-    report.alignment_weight = aligned ? 1. / (1. + u_norm) : 0.;
-    if(u_norm > 0.) u /= u_norm;
-    return u;
   }
 
   void write_answer(const std::vector<Complex>& u, int n, Face_direction_field_result& result,

@@ -52,6 +52,15 @@ inline Field_targets field_targets(const Mesh_geometry& g, const Field_request& 
   return targets;
 }
 
+// A component's share of the guidance q (empty if there is none).
+inline Complex_vector component_guidance(const Component& comp, const std::vector<std::complex<double> >& guidance)
+{
+  if(guidance.empty()) return Complex_vector();
+  Complex_vector q(static_cast<Eigen::Index>(comp.vertices.size()));
+  for(Eigen::Index i = 0; i < q.size(); ++i) q[i] = guidance[comp.vertices[static_cast<std::size_t>(i)]];
+  return q;
+}
+
 // A component's share of the constraints (empty if it has none).
 inline Constraints component_constraints(const Component& comp, const Vertex_constraints& constraints)
 {

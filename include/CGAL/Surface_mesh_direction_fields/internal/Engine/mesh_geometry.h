@@ -28,7 +28,7 @@
 #include <utility>
 #include <vector>
 
-// The engine's first room: what it knows of the mesh, computed once at
+// What the engine knows of the mesh, computed once at
 // construction and never changed by a field computation.
 
 namespace CGAL {

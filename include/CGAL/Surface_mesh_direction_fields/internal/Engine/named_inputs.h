@@ -18,12 +18,14 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -230,6 +232,134 @@ void read_constraint_request(const TriangleMesh& tm, const NamedParameters& np,
       if(get(is_feature, e))
         r.feature_edges.push_back({index_of(source(halfedge(e, tm), tm)), index_of(target(halfedge(e, tm), tm))});
   }
+}
+
+// The named parameters of a field on faces, by face index.
+
+// face_is_constrained_map with face_constrained_direction_map.
+template <typename NamedParameters, typename FaceDescriptor, typename ToArray>
+void read_face_constraints(const NamedParameters& np, const std::vector<FaceDescriptor>& face_of_index,
+                           const ToArray& to_array, Face_field_request& r)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::face_is_constrained_t>::value)
+  {
+    if constexpr(is_default_parameter<NamedParameters, internal_np::face_constrained_direction_map_t>::value)
+      throw Invalid_input_error("face_is_constrained_map needs face_constrained_direction_map");
+    else
+    {
+      const auto is_constrained = get_parameter(np, internal_np::face_is_constrained);
+      const auto directions = get_parameter(np, internal_np::face_constrained_direction_map);
+      r.constrained.assign(face_of_index.size(), 0);
+      r.constrained_direction.assign(face_of_index.size(), Vec3{0., 0., 0.});
+      for(std::size_t i = 0; i < face_of_index.size(); ++i)
+        if(get(is_constrained, face_of_index[i]))
+        {
+          const Vec3 d = to_array(get(directions, face_of_index[i]));
+          if(!(std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2])) || norm(d) == 0.)
+            throw Invalid_input_error("the constrained direction of face " + std::to_string(i) +
+                                      " is zero or not finite");
+          r.constrained[i] = 1;
+          r.constrained_direction[i] = d;
+        }
+    }
+  }
+}
+
+// singularity_cancellation_radius: a length that the parallel field it leads
+// to can honour (it turns as a whole, so it follows no feature or constraint).
+inline void check_cancellation_request(const Face_field_request& r)
+{
+  if(r.cancellation_radius == 0.) return;
+  if(!(r.cancellation_radius > 0.) || !std::isfinite(r.cancellation_radius))
+    throw Invalid_input_error("singularity_cancellation_radius must be a non-negative number (a fraction of the "
+                              "bounding box's diagonal)");
+  if(r.prescribed)
+    throw Invalid_input_error("singularity_cancellation_radius and prescribed_singularities exclude each other "
+                              "(the prescription places every singularity)");
+  const bool constrained = std::find(r.constrained.begin(), r.constrained.end(), 1) != r.constrained.end();
+  if(!r.feature_edges.empty() || constrained || r.boundary != Boundary_alignment::NONE)
+    throw Invalid_input_error("singularity_cancellation_radius does not apply with feature edges, constrained faces "
+                              "or boundary alignment: the field it leads to turns only as a whole");
+  if(r.alignment.lambda_given || r.alignment.weight_given)
+    throw Invalid_input_error("singularity_cancellation_radius does not apply with alignment_lambda or "
+                              "alignment_weight: the field it leads to turns only as a whole towards the guidance");
+}
+
+// The named parameters of a field on faces read into a Face_field_request.
+template <typename TriangleMesh, typename NamedParameters, typename FaceDescriptor, typename IndexOfVertex,
+          typename ToArray>
+Face_field_request face_field_request(const TriangleMesh& tm, const NamedParameters& np,
+                                      const std::vector<FaceDescriptor>& face_of_index, const IndexOfVertex& index_of,
+                                      const ToArray& to_array)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  Field_request common;
+  read_field_parameters(np, common);
+  if(common.s != 0.)
+    throw Invalid_input_error("a field on faces has the Dirichlet energy only: the smoothness parameter s must be 0 "
+                              "(user manual, section \"Fields on Faces\")");
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_guidance_map_t>::value ||
+               !is_default_parameter<NamedParameters, internal_np::vertex_is_constrained_t>::value)
+    throw Invalid_input_error("vertex_guidance_map and vertex_is_constrained_map apply to fields on vertices; a field "
+                              "on faces takes face_guidance_map and face_is_constrained_map");
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
+    throw Invalid_input_error("prescribed_loop_turns applies to fields on vertices: a field on faces with "
+                              "prescribed_singularities turns along each loop by the multiple of 2 pi / n nearest the "
+                              "surface's own");
+  read_constraint_request(tm, np, std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>(),
+                          index_of, to_array, common);
+  Face_field_request r;
+  r.degree = common.degree;
+  r.max_iterations = common.max_iterations;
+  r.residual_tolerance = common.residual_tolerance;
+  r.random_seed = common.random_seed;
+  r.progress = common.progress;
+  r.boundary = common.boundary;
+  r.feature_edges = common.feature_edges;
+  r.curvature = parameters::choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment),
+                                             Principal_curvature_alignment::NONE);
+  if(r.curvature != Principal_curvature_alignment::NONE && r.degree % 2 != 0)
+    throw Invalid_input_error("curvature alignment needs an even degree n (got " + std::to_string(r.degree) + ")");
+  if(!r.feature_edges.empty() && r.degree % 2 != 0)
+    throw Invalid_input_error("alignment with sharp features needs an even degree n (got " +
+                              std::to_string(r.degree) + ")");
+  bool has_guidance = r.curvature != Principal_curvature_alignment::NONE;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::face_guidance_map_t>::value)
+  {
+    has_guidance = true;
+    const auto guidance_map = get_parameter(np, internal_np::face_guidance_map);
+    r.guidance.resize(face_of_index.size());
+    for(std::size_t i = 0; i < face_of_index.size(); ++i)
+    {
+      r.guidance[i] = to_array(get(guidance_map, face_of_index[i]));
+      if(!std::isfinite(r.guidance[i][0]) || !std::isfinite(r.guidance[i][1]) || !std::isfinite(r.guidance[i][2]))
+        throw Invalid_input_error("the guidance vector of face " + std::to_string(i) + " is not finite");
+    }
+  }
+  r.alignment = alignment_request(np, has_guidance);
+  read_face_constraints(np, face_of_index, to_array, r);
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
+    r.prescribed_index = prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
+                                            num_vertices(tm), index_of, "vertex");
+  r.prescribed = !r.prescribed_index.empty();
+  r.cancellation_radius = parameters::choose_parameter(get_parameter(np, internal_np::singularity_cancellation_radius), 0.);
+  check_cancellation_request(r);
+  return r;
+}
+
+// The corner 3f+c of the indexed mesh whose side is the halfedge h.
+template <typename TriangleMesh, typename IndexOfVertex, typename IndexOfFace>
+std::size_t corner_of_halfedge(const TriangleMesh& tm, const Indexed_mesh& m, const IndexOfVertex& index_of_vertex,
+                               const IndexOfFace& index_of_face,
+                               typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  const std::size_t f = index_of_face(face(h, tm)), s = index_of_vertex(source(h, tm));
+  for(std::size_t c = 0; c < 3; ++c)
+    if(static_cast<std::size_t>(m.faces[f][c]) == s) return 3 * f + c;
+  return no_index;
 }
 
 } // namespace internal

@@ -33,7 +33,7 @@
 #include <utility>
 #include <vector>
 
-// The engine's fourth room: fields with prescribed singularities (user
+// Fields with prescribed singularities (user
 // manual, "Placing Singularities") and the loop turns every field reports.
 // It owns the cycle basis and the factored vertex Laplacian, made once per
 // mesh when first needed.

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <vector>
 
 // The pieces of one level of a cheap estimate of the smallest eigenpair of
@@ -217,19 +218,19 @@ inline Complex_vector prolongate(const Complex_vector& xc, const Aggregates& g)
 // quotient: they remove the jumps a prolongated coarse vector has across the
 // aggregates' borders (rough components, which are what makes its Rayleigh
 // quotient a poor bound); returns the Rayleigh quotient of the result, an
-// upper bound of lambda_1 (or NaN if x vanished). A and M must have the same
+// upper bound of lambda_1 (none if x vanished). A and M must have the same
 // pattern.
-inline double smooth_and_bound(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, int sweeps, Complex_vector& x)
+inline std::optional<double> smooth_and_bound(const Complex_sparse_matrix& A, const Complex_sparse_matrix& M, int sweeps, Complex_vector& x)
 {
   const Eigen::VectorXd a_diagonal = A.diagonal().real(), m_diagonal = M.diagonal().real();
   Complex_dense_matrix X(x.size(), 1), AX, MX;
-  double theta = std::numeric_limits<double>::quiet_NaN();
+  double theta = 0.;
   for(int sweep = 0;; ++sweep)
   {
     X.col(0) = x;
     hermitian_multiply_pair(A, M, true, X, AX, MX);
     const double norm2 = x.dot(MX.col(0)).real();
-    if(!(norm2 > 0.)) return std::numeric_limits<double>::quiet_NaN();
+    if(!(norm2 > 0.)) return std::nullopt;
     theta = x.dot(AX.col(0)).real() / norm2;
     if(sweep == sweeps) break;
     for(Eigen::Index i = 0; i < x.size(); ++i)

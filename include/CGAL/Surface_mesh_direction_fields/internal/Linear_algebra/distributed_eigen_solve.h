@@ -333,7 +333,7 @@ inline bool distributed_factorization_available(Mat A)
 // Whether every process has the address space for its share of the factor
 // of A and for the BLAS's work buffers. Under an address-space limit,
 // OpenBLAS's allocator retries forever when it cannot map its buffers
-// (inside MUMPS's dense kernels here, as in dense_kernels.h), so the room is
+// (inside MUMPS's dense kernels here, as in dense_kernels.h), so the space is
 // checked before. The share is taken as 30 times the process's entries of
 // A, above the LU fill of the meshes measured (about 13 times at 400,000
 // faces).

@@ -155,10 +155,10 @@ struct Eigen_solve_result
   std::size_t iterations = 0;
   bool converged = false;
   double factorization_ms = 0., solve_ms = 0.;
-  // the coarse estimate: its bound of lambda_1 (NaN if none), the solves of
+  // the coarse estimate: its bound of lambda_1 (if it has one), the solves of
   // the coarsest level, the shift actually used (A + shift M was factored) and
   // whether the shift from the bound was tried and turned out too large
-  double coarse_upper_bound = std::numeric_limits<double>::quiet_NaN();
+  std::optional<double> coarse_upper_bound;
   std::size_t coarse_iterations = 0;
   double shift = 0.;
   bool shift_rejected = false;
@@ -190,8 +190,8 @@ inline void fix_global_phase(const Complex_vector& Mu, unsigned int seed, Comple
 
 struct Coarse_estimate
 {
-  Complex_vector vector;  // empty if there is no estimate
-  double bound = std::numeric_limits<double>::quiet_NaN();
+  Complex_vector vector;        // empty if there is no estimate
+  std::optional<double> bound;  // an upper bound of lambda_1, with the vector
   std::size_t iterations = 0;
 };
 
@@ -243,8 +243,8 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
     }
     if(coarse_vector.size() != coarse_A.rows()) return estimate;
     Complex_vector x = prolongate(coarse_vector, aggregates);
-    const double bound = smooth_and_bound(A, M, options.smoothing_sweeps, x);
-    if(std::isfinite(bound) && x.allFinite())
+    const std::optional<double> bound = smooth_and_bound(A, M, options.smoothing_sweeps, x);
+    if(bound && std::isfinite(*bound) && x.allFinite())
     {
       estimate.vector.swap(x);
       estimate.bound = bound;
@@ -269,16 +269,17 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
 // single-precision solve with it has no correct digit: it is always factored
 // in double precision.
 template <typename SparseSolver>
-void factor_below_smallest_eigenvalue(const Hermitian_pencil& pencil, double bound, const Eigen_solve_options& options,
-                                      bool single_allowed, Factored_matrix<SparseSolver>& factored,
+void factor_below_smallest_eigenvalue(const Hermitian_pencil& pencil, std::optional<double> bound,
+                                      const Eigen_solve_options& options, bool single_allowed,
+                                      Factored_matrix<SparseSolver>& factored,
                                       Eigen_solve_result& result)
 {
   typedef Factored_matrix<SparseSolver> Factored;
   result.shift = options.relative_shift * pencil.scale;
   bool factored_shifted = false;
-  if(Factored::detects_indefinite && options.shift_fraction * bound > result.shift)
+  if(Factored::detects_indefinite && bound && options.shift_fraction * *bound > result.shift)
   {
-    const double trial = -options.shift_fraction * bound;
+    const double trial = -options.shift_fraction * *bound;
     factored.allow_single_precision(single_allowed);
     factored_shifted =
       factored.factor_if_positive_definite(pencil.matrix_to_factor<Factored>(trial), options.same_pattern);
@@ -318,33 +319,34 @@ inline void ritz_residuals(const Hermitian_pencil& pencil, const Complex_dense_m
 // D = diag(M) wherever M >= D / 2, as for the mass matrix of a flat triangle (its eigenvalues relative to its
 // diagonal are 2, 1/2, 1/2). The best Ritz value is an upper bound of lambda_1, so once its nearest eigenvalue is
 // lambda_1 the bound is below lambda_1; before, or where the margin sqrt(2) does not hold, the factorization
-// refuses the shift (refactor_after_stall()). NaN where the shift should not move yet (see
+// refuses the shift (refactor_after_stall()). None where the shift should not move yet (see
 // Eigen_solve_options::early_reshift_gain); `best_residual` holds the best residual after each solve since
 // the last factorization.
-inline double early_reshift_target(const Hermitian_pencil& pencil, const Complex_vector& r, const Complex_vector& x,
-                                   const Complex_vector& Mx, double theta, double sigma,
-                                   const std::vector<double>& best_residual, const Eigen_solve_options& options)
+inline std::optional<double> early_reshift_target(const Hermitian_pencil& pencil, const Complex_vector& r,
+                                                  const Complex_vector& x, const Complex_vector& Mx, double theta,
+                                                  double sigma, const std::vector<double>& best_residual,
+                                                  const Eigen_solve_options& options)
 {
-  const double none = std::numeric_limits<double>::quiet_NaN();
   const std::size_t k = best_residual.size() - 1;
   const double x_norm2 = x.dot(Mx).real();
-  if(k < 2 || !(options.early_reshift_gain > 0.) || !(x_norm2 > 0.)) return none;
+  if(k < 2 || !(options.early_reshift_gain > 0.) || !(x_norm2 > 0.)) return std::nullopt;
   // ||r||_{D^-1} with r and D scaled first: at scales such as 1e-100 the plain sum of |r_i|^2 / D_i overflows
   const double largest = r.cwiseAbs().maxCoeff(), mean_mass = pencil.lumped_mass.mean();
-  if(!(largest > 0.) || !(mean_mass > 0.)) return none;
+  if(!(largest > 0.) || !(mean_mass > 0.)) return std::nullopt;
   const double scaled_sum = ((r / largest).cwiseAbs2().array() / (pencil.lumped_mass.array() / mean_mass)).sum();
   const double target = theta - std::sqrt(2. * scaled_sum / x_norm2) * largest / std::sqrt(mean_mass);
-  if(!(target > sigma) || !(theta - sigma >= options.early_reshift_gain * (theta - target))) return none;
+  if(!(target > sigma) || !(theta - sigma >= options.early_reshift_gain * (theta - target))) return std::nullopt;
   const std::size_t m = (std::min)(k, std::size_t(3));
   const double rate = std::pow(best_residual[k] / best_residual[k - m], 1. / double(m));
   const double remaining = rate < 1. ? std::log(options.residual_tolerance / best_residual[k]) / std::log(rate)
                                      : std::numeric_limits<double>::infinity();
-  return remaining >= options.early_reshift_min_solves ? target : none;
+  if(!(remaining >= options.early_reshift_min_solves)) return std::nullopt;
+  return target;
 }
 
 // After a step of iterate_with_rayleigh_ritz() with the best Ritz pair (x, theta), residual r: records the
 // step's residual and moves the shift, early (`refactor(theta, target)`, which returns whether it moved or
-// factored), else on a stall (`refactor(theta, NaN)`): when the best residual has not fallen tenfold over the
+// factored), else on a stall (`refactor(theta, std::nullopt)`): when the best residual has not fallen tenfold over the
 // last `options.stall_window` solves (a single step is no test: the residual of the best Ritz pair often grows
 // for a step on the way). A new factorization starts a new history.
 template <typename Refactor>
@@ -353,15 +355,15 @@ void reshift_if_due(const Hermitian_pencil& pencil, const Complex_vector& r, con
                     const Eigen_solve_result& result, std::vector<double>& best_residual)
 {
   best_residual.push_back((std::min)(best_residual.back(), result.residual));
-  const double target =
+  const std::optional<double> target =
     early_reshift_target(pencil, r, x, Mx, result.eigenvalue, -result.shift, best_residual, options);
   const std::size_t k = best_residual.size() - 1;
   const std::size_t window = (std::max)(std::size_t(1), options.stall_window);
-  if(!std::isnan(target) && refactor(result.eigenvalue, target))
+  if(target && refactor(result.eigenvalue, target))
     best_residual.assign(1, best_residual.back());
   else if(k >= window && !(best_residual[k] <= 0.1 * best_residual[k - window]))
   {
-    refactor(result.eigenvalue, std::numeric_limits<double>::quiet_NaN());
+    refactor(result.eigenvalue, std::nullopt);
     best_residual.assign(1, best_residual.back());
   }
 }
@@ -465,7 +467,7 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
 // factor too inexact for a shift close to lambda_1 thus costs stalls, not
 // the convergence).
 template <typename SparseSolver>
-bool refactor_after_stall(const Hermitian_pencil& pencil, double theta, double target,
+bool refactor_after_stall(const Hermitian_pencil& pencil, double theta, std::optional<double> target,
                           const Eigen_solve_options& options, Factored_matrix<SparseSolver>& factored,
                           Eigen_solve_result& result)
 {
@@ -474,13 +476,13 @@ bool refactor_after_stall(const Hermitian_pencil& pencil, double theta, double t
   const bool single = factored.holds_single_precision();
   const bool can_move =
     result.reshifts < options.max_reshifts && Factored::detects_indefinite && theta > sigma;
-  if(!std::isnan(target) && !(can_move && target > sigma)) return false;
+  if(target && !(can_move && *target > sigma)) return false;
   bool tried = false, moved = false;
   if(can_move)
   {
     ++result.reshifts;
     tried = true;
-    const double closer = std::isnan(target) ? theta - options.reshift_fraction * (theta - sigma) : target;
+    const double closer = target ? *target : theta - options.reshift_fraction * (theta - sigma);
     factored.allow_single_precision(options.single_precision);
     moved = factored.factor_if_positive_definite(pencil.matrix_to_factor<Factored>(-closer), true);
     factored.allow_single_precision(false);
@@ -589,7 +591,7 @@ Eigen_solve_result smallest_eigenpair_of(const Complex_sparse_matrix& A, const C
   result.single_precision = factored.holds_single_precision();
   const auto t1 = Clock::now();
   double refactorization_ms = 0.;
-  auto refactor = [&](double theta, double target) {
+  auto refactor = [&](double theta, std::optional<double> target) {
     const auto start = Clock::now();
     options_after_analysis.same_pattern = true;
     const bool acted = refactor_after_stall(pencil, theta, target, options, factored, result);

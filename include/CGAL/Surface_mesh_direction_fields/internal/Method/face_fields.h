@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/guidance.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
@@ -108,11 +109,6 @@ inline std::vector<std::size_t> local_face_numbers(const Component& comp, std::s
   return local;
 }
 
-struct Face_energy_and_mass
-{
-  Complex_sparse_matrix energy, mass;
-};
-
 // A and M of one component for degree n: E(u) = sum over dual edges of
 // w |u_g - r_fg u_f|^2 with r_fg = exp(i n rho_fg), M = diag(|f|). Each
 // interior side is visited from both faces; the visit from f adds w to A_ff
@@ -120,9 +116,8 @@ struct Face_energy_and_mass
 // stores explicit zeros where A has entries: with one pattern the eigen-solve
 // estimates its shift and start vector on coarse levels (coarse_hierarchy.h)
 // and forms A - sigma M entry by entry.
-inline Face_energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts,
-                                                 const Dual_connection& dc, const Component& comp, int n,
-                                                 const std::vector<std::size_t>& local)
+inline Energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Tangent_spaces& ts, const Dual_connection& dc,
+                                            const Component& comp, int n, const std::vector<std::size_t>& local)
 {
   const Eigen::Index nf = static_cast<Eigen::Index>(comp.faces.size());
   std::vector<Eigen::Triplet<Complex> > energy, mass;
@@ -145,7 +140,7 @@ inline Face_energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Ta
       mass.emplace_back(j, row, Complex(0., 0.));
     }
   }
-  Face_energy_and_mass em;
+  Energy_and_mass em;
   em.energy.resize(nf, nf);
   em.mass.resize(nf, nf);
   em.energy.setFromTriplets(energy.begin(), energy.end());

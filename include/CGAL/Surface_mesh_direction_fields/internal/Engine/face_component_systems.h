@@ -1,0 +1,107 @@
+// Copyright (c) 2026  The Surface_mesh_direction_fields authors.
+// All rights reserved.
+//
+// This file is part of CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s)     : The Surface_mesh_direction_fields authors
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
+
+#include <CGAL/license/Surface_mesh_direction_fields.h>
+
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_systems.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+// The linear systems of a field on faces, one component at a time, for
+// Component_fields (component_fields.h): A and M of the faces of the
+// component being solved, and its factorization, both freed when it is done.
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+template <typename SparseSolver>
+class Face_component_systems
+{
+public:
+  typedef SparseSolver Solver;
+  typedef Component_factorization<SparseSolver> Factorization;
+  static constexpr bool detects_indefinite = Factored_matrix<SparseSolver>::detects_indefinite;
+  // the aligned systems on faces are factored in double precision, as they were before
+  // the engines were one (single precision with refinement is not measured on faces)
+  static constexpr bool aligned_in_single_precision = false;
+
+  // `user_solver`: the user's solver, copied into each factorization (or null).
+  Face_component_systems(const Components& components, double length_scale, const SparseSolver* user_solver)
+    : m_components(components), m_length_scale(length_scale), m_user_solver(user_solver),
+      m_matrices(components.list.size())
+  {}
+
+  // Component c's A and M (the previous component's are freed).
+  void set_matrices(std::size_t c, Energy_and_mass em)
+  {
+    for(Energy_and_mass& old : m_matrices) old = Energy_and_mass();
+    m_matrices[c] = std::move(em);
+  }
+
+  std::size_t unknowns(std::size_t c) const { return m_components.list[c].faces.size(); }
+  // eigenvalues from the normalized coordinates (lengths times length_scale) to the user's
+  double eigenvalue_to_user(double lambda) const { return lambda * m_length_scale * m_length_scale; }
+
+  const Energy_and_mass& matrices(std::size_t c) const { return m_matrices[c]; }
+  Energy_and_mass* matrices_of_single_use(std::size_t) { return nullptr; }
+  Complex_vector mass_times(std::size_t c, const Complex_vector& x) const { return m_matrices[c].mass * x; }
+  double scale(std::size_t c) const { return eigenvalue_scale(m_matrices[c].energy, m_matrices[c].mass); }
+
+  Factorization& factorization(std::size_t)
+  {
+    if(!m_factorization)
+    {
+      m_factorization = std::make_unique<Factorization>();
+      if(m_user_solver != nullptr) m_factorization->solver = *m_user_solver;
+    }
+    return *m_factorization;
+  }
+  void release_factorization(std::size_t) { m_factorization.reset(); }
+  bool user_solver() const { return m_user_solver != nullptr; }
+
+  // Fields on faces are solved on this process alone.
+  bool certifies_definiteness(std::size_t) const { return detects_indefinite; }
+  bool distributes(std::size_t) const { return false; }
+  Eigen_solve_result distributed_eigenpair(std::size_t, const Eigen_solve_options&) const
+  {
+    throw Solver_failure_error("fields on faces have no distributed eigen-solve");
+  }
+  bool distributed_shifted_solve(std::size_t, double, const Complex_vector&, const Constraints&,
+                                 Complex_vector&) const
+  {
+    return false;
+  }
+
+private:
+  const Components& m_components;
+  double m_length_scale;
+  const SparseSolver* m_user_solver;
+  std::vector<Energy_and_mass> m_matrices;
+  std::unique_ptr<Factorization> m_factorization;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
