@@ -142,7 +142,8 @@ inline const Option_help option_help[] = {
                                     "meshio too), .obj ('l' lines), or any other name: one 'N x1 y1 z1 ... xN yN "
                                     "zN' per line"},
   {"Outputs", "--mesh-out FILE", "the repaired triangle mesh the outputs refer to (.off, .obj or .ply)"},
-  {"Outputs", "--quiet", "say nothing on stderr while running (progress is shown only on a terminal)"},
+  {"Outputs", "--quiet", "print nothing but errors, warnings and the --json line: no summary, no progress "
+                        "(progress is shown only on a terminal anyway)"},
   {"Performance", "--solver WHICH", "default (CHOLMOD on this process) or petsc: the large components spread over "
                                     "the processes of mpirun, which assemble and solve their parts without a "
                                     "factorization (mpirun -np K direction_field MESH --solver petsc; a build with "

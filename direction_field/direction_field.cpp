@@ -484,7 +484,7 @@ void write_report(const Options& o, const Repaired_mesh<Mesh>& input, const SMDF
                   const Left_out_outputs& left_out, const Program_timings& timings, int ranks)
 {
   if(o.json) write_json(std::cout, o, input, r, left_out, timings, ranks);
-  else write_summary(std::cout, o, input, r, left_out, timings, ranks);
+  else if(!o.quiet) write_summary(std::cout, o, input, r, left_out, timings, ranks);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");
 }
@@ -552,7 +552,7 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
     outputs.close(o.json_file);
   }
   if(o.json) face_field_run::write_json(std::cout, o, input, field, outputs, timings);
-  else face_field_run::write_summary(std::cout, o, input, field);
+  else if(!o.quiet) face_field_run::write_summary(std::cout, o, input, field);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");
   outputs.commit();

@@ -352,7 +352,7 @@ inline int run(const Options& o, Progress& progress, Program_timings& timings, O
     outputs.close(o.json_file);
   }
   if(o.json) write_json(std::cout, o, field, outputs.left_out(), timings);
-  else write_summary(std::cout, o, field);
+  else if(!o.quiet) write_summary(std::cout, o, field);
   std::cout.flush();
   if(!std::cout) throw Usage_error("cannot write to standard output");
   outputs.commit();

@@ -46,14 +46,6 @@ inline std::string number(double x)
 // A value that may not have been computed (an eigenvalue): null if it was not.
 inline std::string number(const std::optional<double>& x) { return x ? number(*x) : "null"; }
 
-// What gave a component its field, for the JSON ("solves") and the summary.
-inline const char* solve_name(SMDF::Field_solve solve)
-{
-  return solve == SMDF::Field_solve::EIGEN_SOLVE    ? "eigen-solve"
-         : solve == SMDF::Field_solve::LINEAR_SOLVE ? "linear solve"
-                                                    : "parallel section";
-}
-
 // The summary's words for a component's solve: the eigenvalue, iterations
 // and residual of an eigen-solve; the system of an aligned or constrained
 // field (with lambda_1 where it was computed beside it); the parallel

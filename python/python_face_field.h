@@ -8,6 +8,7 @@
 #include "python_results.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh_direction_fields/feature_edges.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_face_directions.h>
 
 namespace {
@@ -178,14 +179,7 @@ Face_field_result with_read_only_arrays(Face_field_result r)
 // coordinates near 1e77).
 inline Kernel::Vector_3 unit_face_normal(const Mesh& mesh, Face_index f)
 {
-  std::array<SMDF::internal::Vec3, 3> corner;
-  int c = 0;
-  for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-  {
-    const Kernel::Point_3& p = mesh.point(v);
-    corner[static_cast<std::size_t>(c++)] = {p.x(), p.y(), p.z()};
-  }
-  const SMDF::internal::Vec3 n = SMDF::internal::triangle_unit_normal(corner[0], corner[1], corner[2]);
+  const SMDF::internal::Vec3 n = SMDF::internal::unit_face_normal(f, mesh, mesh.points());
   return Kernel::Vector_3(n[0], n[1], n[2]);
 }
 

@@ -5,6 +5,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_PICKLING_H
 
 #include "python_mesh.h"
+#include "file_io/messages.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 
@@ -76,14 +77,6 @@ inline void check_state_degree(int degree)
   if(degree < 1 || degree > SMDF::maximum_degree)
     refuse("the pickled state's degree " + std::to_string(degree) + " is not from 1 to " +
            std::to_string(SMDF::maximum_degree));
-}
-
-// The names of Field_solve, as the program's JSON writes them ("solves").
-inline const char* solve_name(SMDF::Field_solve solve)
-{
-  return solve == SMDF::Field_solve::EIGEN_SOLVE    ? "eigen-solve"
-         : solve == SMDF::Field_solve::LINEAR_SOLVE ? "linear solve"
-                                                    : "parallel section";
 }
 
 template <typename Report>

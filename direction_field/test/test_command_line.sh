@@ -475,9 +475,15 @@ check "a misspelt option: the nearest suggested" grep -q "did you mean --degree?
 # the summary's words: a closed mesh's index sum is n chi; an open one's says that it need not be
 printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n' > "$out/square2.off"
 check "summary: n chi on a closed mesh" grep -q "index sum 8/4 (= n times the Euler characteristic" \
-      <("$bin" "$out/octahedron.off" --quiet)
+      <("$bin" "$out/octahedron.off" 2> /dev/null)
 check "summary: an open mesh's index sum explained" grep -q "holds on closed meshes only" \
-      <("$bin" "$out/square2.off" --quiet)
+      <("$bin" "$out/square2.off" 2> /dev/null)
+for where in vertices faces; do
+  check "--quiet: nothing on stdout or stderr (--on $where)" \
+        test -z "$("$bin" "$out/octahedron.off" --on "$where" --quiet 2>&1)"
+done
+check "--quiet with --json: the JSON line alone" \
+      test "$("$bin" "$out/octahedron.off" --quiet --json 2>&1 | grep -c '^{')" = 1
 check "--version: the package's version" \
       test "$("$bin" --version)" = "direction_field $(sed -n 's/^project(Surface_mesh_direction_fields VERSION \([0-9.]*\).*/\1/p' "$(dirname "$0")/../../CMakeLists.txt")"
 bad "truncated file" "$out/truncated.off"

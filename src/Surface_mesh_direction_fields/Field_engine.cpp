@@ -6,7 +6,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_face_directions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/Field_engine_impl.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine_impl.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Face_field_engine_impl.h>
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
 #endif

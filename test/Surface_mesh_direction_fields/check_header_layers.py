@@ -15,7 +15,9 @@ import re
 import sys
 
 VOCABULARY = {"exceptions.h", "alignment.h", "Direction_field_result.h"}  # include nothing of the package
-SOLVER = {"Cholmod_supernodal_solver.h"}  # the default solver: the engine instantiates its Factored_matrix
+# the solvers' public headers: usable on their own, over the linear algebra alone (the engine sees a
+# solver type only; the front end that chooses it includes it)
+SOLVER = {"Cholmod_supernodal_solver.h", "Petsc_solver_traits.h"}
 
 # what each layer may include, besides itself
 MAY_USE = {
@@ -25,7 +27,7 @@ MAY_USE = {
     "Mesh": {"vocabulary", "base"},
     "Method": {"vocabulary", "base", "Linear_algebra", "Mesh"},
     "solver": {"vocabulary", "base", "Linear_algebra"},
-    "Engine": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method", "solver"},
+    "Engine": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method"},
     "IO internals": {"vocabulary", "base", "public"},
     "public": None,  # anything
 }

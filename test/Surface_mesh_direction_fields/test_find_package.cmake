@@ -5,6 +5,10 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/pre
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "install failed")
 endif()
+# the command-line program is installed with the library when it was built
+if(PROGRAM AND NOT EXISTS ${WORK}/prefix/bin/direction_field)
+  message(FATAL_ERROR "the install has no bin/direction_field")
+endif()
 # the consumer names the CGAL of the package's build (5.5 or 6.x) as its users would
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -DCMAKE_PREFIX_PATH=${WORK}/prefix
                         -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR=${CGAL_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -159,40 +159,20 @@ public:
   explicit Globally_optimal_direction_field(const TriangleMesh& tmesh,
                                             const NamedParameters& np = parameters::default_values())
   {
-    using parameters::choose_parameter;
     using parameters::get_parameter;
     using parameters::is_default_parameter;
     const auto start = Clock::now();
-    m_traits = choose_parameter<GeomTraits>(get_parameter(np, internal_np::geom_traits));
-    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tmesh));
-    const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
-    const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
-    m_tmesh = &tmesh;
-    m_index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
-    m_index_of_face = [fim](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
-    const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
-    if(!(mollification >= 0.) || !std::isfinite(mollification))
-      throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
-
-    const internal::Point_to_array<GeomTraits> to_array{m_traits};
-    internal::Indexed_mesh mesh =
-      internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
-    m_vertex_of_index.resize(mesh.number_of_vertices());
-    for(vertex_descriptor v : vertices(tmesh))
-      m_vertex_of_index[static_cast<std::size_t>(get(vim, v))] = v;
-    m_face_of_index.resize(mesh.number_of_faces());
-    for(face_descriptor f : faces(tmesh))
-      m_face_of_index[static_cast<std::size_t>(get(fim, f))] = f;
+    internal::Indexed_mesh mesh = m_indexing.index(tmesh, np);
+    const internal::Point_to_array<GeomTraits> to_array{m_indexing.traits};
     std::vector<internal::Vec3> normals;  // empty: the angle-weighted normals
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_normal_map_t>::value)
     {
       const auto vnm = get_parameter(np, internal_np::vertex_normal_map);
-      normals.resize(m_vertex_of_index.size());
-      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
-        normals[i] = internal::normalized(to_array(get(vnm, m_vertex_of_index[i])));
+      normals.resize(m_indexing.vertex_of_index.size());
+      for(std::size_t i = 0; i < m_indexing.vertex_of_index.size(); ++i)
+        normals[i] = internal::normalized(to_array(get(vnm, m_indexing.vertex_of_index[i])));
     }
-    m_engine = std::make_unique<Engine>(std::move(mesh), mollification, std::move(normals));
+    m_engine = std::make_unique<Engine>(std::move(mesh), m_indexing.mollification, std::move(normals));
     m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
 
@@ -225,14 +205,16 @@ public:
     const auto start = Clock::now();
     internal::Field_request request;
     internal::read_field_parameters(np, request);
-    const internal::Point_to_array<GeomTraits> to_array{m_traits};
-    internal::read_guidance_request(np, m_vertex_of_index, to_array, request);
-    internal::read_constraint_request(*m_tmesh, np, m_vertex_of_index, m_index_of_vertex, to_array, request);
+    const internal::Point_to_array<GeomTraits> to_array{m_indexing.traits};
+    internal::read_guidance_request(np, m_indexing.vertex_of_index, to_array, request);
+    internal::read_constraint_request(*m_indexing.tmesh, np, m_indexing.vertex_of_index, m_indexing.index_of_vertex,
+                                      to_array, request);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_singularities_t>::value)
     {
       request.prescribed = true;
-      request.prescribed_index = internal::prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
-                                                               m_face_of_index.size(), m_index_of_face, "face");
+      request.prescribed_index =
+        internal::prescribed_indices(get_parameter(np, internal_np::prescribed_singularities),
+                                     m_indexing.face_of_index.size(), m_indexing.index_of_face, "face");
       if constexpr(!is_default_parameter<NamedParameters, internal_np::prescribed_loop_turns_t>::value)
         for(const auto& entry : get_parameter(np, internal_np::prescribed_loop_turns))
           request.loop_turns.emplace_back(static_cast<std::size_t>(entry.first), static_cast<long>(entry.second));
@@ -252,17 +234,19 @@ public:
     auto out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator),
                                 CGAL::Emptyset_iterator());
     for(const auto& face_and_k : answer.singular_faces)
-      *out++ = std::make_pair(m_face_of_index[face_and_k.first], face_and_k.second);
+      *out++ = std::make_pair(m_indexing.face_of_index[face_and_k.first], face_and_k.second);
     write_directions(answer.directions, vertex_direction_map);
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_magnitude_map_t>::value)
     {
       const auto vmm = get_parameter(np, internal_np::vertex_magnitude_map);
-      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i) put(vmm, m_vertex_of_index[i], answer.magnitudes[i]);
+      for(std::size_t i = 0; i < m_indexing.vertex_of_index.size(); ++i)
+        put(vmm, m_indexing.vertex_of_index[i], answer.magnitudes[i]);
     }
     if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_coefficient_map_t>::value)
     {
       const auto vcm = get_parameter(np, internal_np::vertex_coefficient_map);
-      for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i) put(vcm, m_vertex_of_index[i], answer.coefficients[i]);
+      for(std::size_t i = 0; i < m_indexing.vertex_of_index.size(); ++i)
+        put(vcm, m_indexing.vertex_of_index[i], answer.coefficients[i]);
     }
     result.timings.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     result.timings.solve_ms = result.timings.total_ms - result.timings.setup_ms - result.timings.factorization_ms;
@@ -290,7 +274,7 @@ public:
       for(const auto& corner_and_sign : corners)
       {
         const halfedge_descriptor h = halfedge_of_corner(corner_and_sign.first);
-        loops.back().push_back(corner_and_sign.second > 0 ? h : opposite(h, *m_tmesh));
+        loops.back().push_back(corner_and_sign.second > 0 ? h : opposite(h, *m_indexing.tmesh));
       }
     }
     return loops;
@@ -330,11 +314,12 @@ private:
   // halfedge whose source has the smallest index (make_indexed_mesh()).
   halfedge_descriptor halfedge_of_corner(std::size_t ci) const
   {
-    const halfedge_descriptor start = halfedge(m_face_of_index[internal::Indexed_mesh::face_of_corner(ci)], *m_tmesh);
+    const TriangleMesh& tm = *m_indexing.tmesh;
+    const halfedge_descriptor start = halfedge(m_indexing.face_of_index[internal::Indexed_mesh::face_of_corner(ci)], tm);
     halfedge_descriptor h = start;
-    for(halfedge_descriptor g = next(start, *m_tmesh); g != start; g = next(g, *m_tmesh))
-      if(m_index_of_vertex(source(g, *m_tmesh)) < m_index_of_vertex(source(h, *m_tmesh))) h = g;
-    for(std::size_t c = 0; c < ci % 3; ++c) h = next(h, *m_tmesh);
+    for(halfedge_descriptor g = next(start, tm); g != start; g = next(g, tm))
+      if(m_indexing.index_of_vertex(source(g, tm)) < m_indexing.index_of_vertex(source(h, tm))) h = g;
+    for(std::size_t c = 0; c < ci % 3; ++c) h = next(h, tm);
     return h;
   }
 
@@ -344,20 +329,15 @@ private:
   void write_directions(const std::vector<internal::Vec3>& directions, VertexDirectionMap vertex_direction_map) const
   {
     typedef typename GeomTraits::FT FT;
-    auto construct_vector = m_traits.construct_vector_3_object();
-    for(std::size_t i = 0; i < m_vertex_of_index.size(); ++i)
+    auto construct_vector = m_indexing.traits.construct_vector_3_object();
+    for(std::size_t i = 0; i < m_indexing.vertex_of_index.size(); ++i)
     {
       const internal::Vec3& d = directions[i];
-      put(vertex_direction_map, m_vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+      put(vertex_direction_map, m_indexing.vertex_of_index[i], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
     }
   }
 
-  GeomTraits m_traits;
-  const TriangleMesh* m_tmesh = nullptr;
-  std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;  // the vertex index map of the construction
-  std::function<std::size_t(face_descriptor)> m_index_of_face;      // its face index map
-  std::vector<vertex_descriptor> m_vertex_of_index;
-  std::vector<face_descriptor> m_face_of_index;
+  internal::Mesh_indexing<TriangleMesh, GeomTraits> m_indexing;  // the index maps of the construction
   std::unique_ptr<Engine> m_engine;  // everything else: the method and its linear algebra
   double m_construction_ms = 0.;
 };

@@ -17,9 +17,9 @@
 #include <CGAL/Surface_mesh_direction_fields/Globally_optimal_direction_field.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/named_inputs.h>
 // the method on the dual mesh behind one seam, as for vertex fields
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Face_field_engine.h>
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION
-#  include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine_impl.h>
+#  include <CGAL/Surface_mesh_direction_fields/internal/Engine/Face_field_engine_impl.h>
 #endif
 
 #include <CGAL/boost/graph/helpers.h>
@@ -84,29 +84,9 @@ public:
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Globally_optimal_face_direction_field(const TriangleMesh& tmesh,
                                                  const NamedParameters& np = parameters::default_values())
-    : m_tmesh(&tmesh)
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
     const auto start = Clock::now();
-    m_traits = choose_parameter<GeomTraits>(get_parameter(np, internal_np::geom_traits));
-    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tmesh));
-    const auto vim = CGAL::get_initialized_vertex_index_map(tmesh, np);
-    const auto fim = CGAL::get_initialized_face_index_map(tmesh, np);
-    m_index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
-    m_index_of_face = [fim](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
-    const double mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
-    if(!(mollification >= 0.) || !std::isfinite(mollification))
-      throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
-    m_face_of_index.resize(num_faces(tmesh));
-    for(face_descriptor f : faces(tmesh)) m_face_of_index[m_index_of_face(f)] = f;
-    m_vertex_of_index.resize(num_vertices(tmesh));
-    for(vertex_descriptor v : vertices(tmesh)) m_vertex_of_index[m_index_of_vertex(v)] = v;
-    const internal::Point_to_array<GeomTraits> to_array{m_traits};
-    m_engine = std::make_unique<Engine>(
-      internal::make_indexed_mesh(tmesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim),
-      mollification);
+    m_engine = std::make_unique<Engine>(m_indexing.index(tmesh, np), m_indexing.mollification);
     m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
 
@@ -135,9 +115,10 @@ public:
     using parameters::get_parameter;
     internal::check_field_parameters(parameters::choose_parameter(get_parameter(np, internal_np::degree), default_degree),
                                      parameters::choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
-    const internal::Point_to_array<GeomTraits> to_array{m_traits};
+    const internal::Point_to_array<GeomTraits> to_array{m_indexing.traits};
     const internal::Face_field_request request =
-      internal::face_field_request(*m_tmesh, np, m_face_of_index, m_index_of_vertex, to_array);
+      internal::face_field_request(*m_indexing.tmesh, np, m_indexing.face_of_index, m_indexing.index_of_vertex,
+                                   to_array);
     internal::Face_field_answer answer;
     const Face_direction_field_result result =
       internal::compute_with_solver<SparseSolver>(np, *m_engine, request, answer);
@@ -164,35 +145,36 @@ private:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     typedef typename GeomTraits::FT FT;
-    const auto construct_vector = m_traits.construct_vector_3_object();
-    for(std::size_t f = 0; f < m_face_of_index.size(); ++f)
+    const auto construct_vector = m_indexing.traits.construct_vector_3_object();
+    for(std::size_t f = 0; f < m_indexing.face_of_index.size(); ++f)
     {
       const internal::Vec3& d = answer.directions[f];
-      put(face_direction_map, m_face_of_index[f], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
+      put(face_direction_map, m_indexing.face_of_index[f], construct_vector(FT(d[0]), FT(d[1]), FT(d[2])));
     }
     auto out = choose_parameter(get_parameter(np, internal_np::singularities_output_iterator), CGAL::Emptyset_iterator());
     for(std::size_t v = 0; v < answer.vertex_index.size(); ++v)
-      if(answer.vertex_index[v] != 0) *out++ = std::make_pair(m_vertex_of_index[v], answer.vertex_index[v]);
+      if(answer.vertex_index[v] != 0) *out++ = std::make_pair(m_indexing.vertex_of_index[v], answer.vertex_index[v]);
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_matching_map_t>::value)
     {
       auto matching_map = get_parameter(np, internal_np::edge_matching_map);
-      const TriangleMesh& tm = *m_tmesh;
+      const TriangleMesh& tm = *m_indexing.tmesh;
       for(auto e : edges(tm))
       {
         const auto h = halfedge(e, tm);
         const bool border = is_border(h, tm) || is_border(opposite(h, tm), tm);
-        put(matching_map, e, border ? 0 : answer.matching[internal::corner_of_halfedge(
-                                            tm, m_engine->mesh(), m_index_of_vertex, m_index_of_face, h)]);
+        if(border)
+        {
+          put(matching_map, e, 0);
+          continue;
+        }
+        const std::size_t corner =
+          internal::corner_of_halfedge(tm, m_engine->mesh(), m_indexing.index_of_vertex, m_indexing.index_of_face, h);
+        put(matching_map, e, answer.matching[corner]);
       }
     }
   }
 
-  const TriangleMesh* m_tmesh = nullptr;
-  GeomTraits m_traits;
-  std::function<std::size_t(vertex_descriptor)> m_index_of_vertex;
-  std::function<std::size_t(face_descriptor)> m_index_of_face;
-  std::vector<vertex_descriptor> m_vertex_of_index;
-  std::vector<face_descriptor> m_face_of_index;
+  internal::Mesh_indexing<TriangleMesh, GeomTraits> m_indexing;  // the index maps of the construction
   std::unique_ptr<Engine> m_engine;
   double m_construction_ms = 0.;
 };

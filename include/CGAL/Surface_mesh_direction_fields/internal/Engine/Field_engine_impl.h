@@ -32,11 +32,6 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 
-#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD
-// the default solver and its Factored_matrix
-#include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
-#endif
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -60,16 +55,36 @@ class Field_engine<SparseSolver>::Impl
 
 public:
   Impl(Indexed_mesh mesh, double mollification, std::vector<Vec3> normals)
-    : m_geometry(std::move(mesh), mollification, std::move(normals)), m_systems(m_geometry), m_prescribed(m_geometry)
+    : m_geometry(std::move(mesh), mollification, std::move(normals)), m_prescribed(m_geometry)
   {}
 
-  // One field (see Globally_optimal_direction_field::compute()).
+  // One field (see Globally_optimal_direction_field::compute()), on the
+  // kept systems under this call's solver and backend.
   Direction_field_result compute(const Field_request& request, const SparseSolver* given_solver, Field_answer& answer)
   {
     const auto start = Clock::now();
     Direction_field_result result = empty_result(request);
     if(request.prescribed) return compute_prescribed(request, given_solver, std::move(result), start, answer);
-    typename Component_systems<SparseSolver>::Call_scope call(m_systems, {given_solver, request.distributed});
+    Component_systems<SparseSolver> systems(m_geometry, m_kept, {given_solver, request.distributed});
+    try
+    {
+      return compute_optimal(request, given_solver, systems, std::move(result), start, answer);
+    }
+    catch(...)
+    {
+      systems.forget_after_failure();  // the next call starts from a consistent state
+      throw;
+    }
+  }
+
+  std::vector<Corner_loop> prescription_loops() { return m_prescribed.loops(); }
+
+private:
+  // The smallest or aligned field: compute()'s steps.
+  Direction_field_result compute_optimal(const Field_request& request, const SparseSolver* given_solver,
+                                         Component_systems<SparseSolver>& systems, Direction_field_result result,
+                                         Clock::time_point start, Field_answer& answer)
+  {
     SparseSolver linear_solver = given_solver != nullptr ? *given_solver : SparseSolver();
     Progress_report progress(request.progress);
     const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
@@ -77,22 +92,21 @@ public:
 
     // 1. the hard constraints and the alignment request (manual, "Aligned and Constrained Fields")
     Field_targets targets = field_targets(m_geometry, request);
-    const std::vector<std::size_t> early = factored_before_guidance(targets);
+    const std::vector<std::size_t> early = factored_before_guidance(systems, targets);
 
     // 2. the connection of degree n and the matrices of (n, s), unless kept from the last call
-    m_systems.update_matrices(result.degree, result.smoothness_parameter,
-                              m_systems.shift_only(early, targets.alignment.lambda));
+    systems.update_matrices(result.degree, result.smoothness_parameter, systems.shift_only(early, targets.alignment.lambda));
     result.timings.setup_ms = milliseconds_since(start);
     progress.reached(0.1);
 
     // 3. the guidance q, computed while the factorizations that do not depend on it run
-    read_guidance(request, early, linear_solver, targets, result.timings);
+    read_guidance(request, early, systems, linear_solver, targets, result.timings);
     progress.reached(0.2);
 
     // 4. one problem per component: the smallest eigenvector, or the aligned / constrained solve
     Eigen_solve_options options = eigen_solve_options(request);
     options.keep_going = progress.keep_going_test();
-    Component_fields<Component_systems<SparseSolver> > fields(m_systems, options, linear_solver, result.timings);
+    Component_fields<Component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_geometry.mesh.number_of_vertices(), Complex(0., 0.));
     answer.magnitudes.assign(u.size(), 0.);
     result.components.resize(m_geometry.components.list.size());
@@ -104,8 +118,8 @@ public:
     progress.reached(1.);
 
     // 5. the outputs: singular faces with their indices, unit directions in 3D
-    report_indices(face_indices(m_geometry.mesh, m_systems.connection(), u), result, answer);
-    result.loop_turns = m_prescribed.loop_turns_of(u, m_systems.connection(), result.components);
+    report_indices(face_indices(m_geometry.mesh, systems.connection(), u), result, answer);
+    result.loop_turns = m_prescribed.loop_turns_of(u, systems.connection(), result.components);
     write_directions(u, result.degree, targets.constraints, result, answer);
     store_coefficients(std::move(u), answer);
     for(Component_report& report : result.components)
@@ -117,13 +131,12 @@ public:
     return result;
   }
 
-  std::vector<Corner_loop> prescription_loops() { return m_prescribed.loops(); }
-
+public:
   // A and M of every component, gathered into matrices over all vertices.
   std::pair<Complex_sparse_matrix, Complex_sparse_matrix> energy_and_mass(int degree, double s)
   {
     const Mesh_geometry& g = m_geometry;
-    const Connection& connection = m_systems.update_connection(degree);
+    const Connection& connection = m_kept.connection_of_degree(m_geometry, degree);
     const std::vector<Energy_and_mass> parts =
       assemble_energy_and_mass(g.mesh, g.tangent_spaces, connection, g.components, s);
     // lengths were multiplied by length_scale: A is unchanged, areas are divided back
@@ -150,7 +163,7 @@ public:
     whole.second.setFromTriplets(mass.begin(), mass.end());
     return whole;
   }
-  void keep_factorizations(bool keep) { m_systems.keep_factorizations(keep); }
+  void keep_factorizations(bool keep) { m_kept.keep_factorizations = keep; }
   const Indexed_mesh& mesh() const { return m_geometry.mesh; }
 
 private:
@@ -234,7 +247,7 @@ private:
     progress.reached(0.);
     Field_targets targets = field_targets(m_geometry, request);
     Prescribed_fields::refuse_other_requests(request);
-    const Connection& connection = m_systems.update_connection(result.degree);
+    const Connection& connection = m_kept.connection_of_degree(m_geometry, result.degree);
     result.timings.setup_ms = milliseconds_since(start);
     result.components.resize(m_geometry.components.list.size());
     for(std::size_t c = 0; c < result.components.size(); ++c)
@@ -246,7 +259,8 @@ private:
     std::vector<Complex> u = m_prescribed.field(request, connection, result);
     result.prescribed = true;
     SparseSolver linear_solver = given_solver != nullptr ? *given_solver : SparseSolver();
-    read_guidance(request, {}, linear_solver, targets, result.timings);
+    Component_systems<SparseSolver> systems(m_geometry, m_kept, {given_solver, nullptr});
+    read_guidance(request, {}, systems, linear_solver, targets, result.timings);
     for(std::size_t c = 0; c < result.components.size(); ++c) m_prescribed.rotate(c, targets, u);
     report_indices(m_prescribed.checked_indices(request, connection, u), result, answer);
     result.loop_turns = m_prescribed.turns_of_prescribed(u, connection);
@@ -266,14 +280,15 @@ private:
   // the top of each elimination tree, and with it the last digits, depend on
   // their timing (Single_threaded_blas in dense_kernels.h).
   void read_guidance(const Field_request& request, const std::vector<std::size_t>& early,
-                     SparseSolver& linear_solver, Field_targets& targets, Direction_field_timings& timings)
+                     Component_systems<SparseSolver>& systems, SparseSolver& linear_solver, Field_targets& targets,
+                     Direction_field_timings& timings)
   {
     auto compute_guidance = [&] {
       targets.guidance = guidance_coefficients(m_geometry.mesh, m_geometry.tangent_spaces, m_geometry.components,
                                                request, m_geometry.normals, linear_solver);
     };
     auto factor_early = [&] {
-      for(std::size_t c : early) m_systems.factor_aligned_system(c, targets.alignment.lambda);
+      for(std::size_t c : early) systems.factor_aligned_system(c, targets.alignment.lambda);
     };
     const bool guidance_factors = request.curvature != Principal_curvature_alignment::NONE &&
                                   request.curvature_estimate == Principal_curvature_estimate::HOPF_DIFFERENTIAL;
@@ -285,11 +300,11 @@ private:
     const auto start = Clock::now();
     if(guidance_factors)
     {
-      m_systems.prepare_mass_operator();
+      systems.prepare_mass_operator();
       factor_early();
     }
     else
-      parallel_invoke([&] { compute_guidance(); m_systems.prepare_mass_operator(); }, factor_early);
+      parallel_invoke([&] { compute_guidance(); systems.prepare_mass_operator(); }, factor_early);
     timings.factorization_ms += milliseconds_since(start);
   }
 
@@ -298,14 +313,15 @@ private:
   // needs lambda_1 first, a solver that certifies definiteness. (If the
   // guidance then vanishes on a component, its field is the smoothest one and
   // this factorization is not used.)
-  std::vector<std::size_t> factored_before_guidance(const Field_targets& targets) const
+  std::vector<std::size_t> factored_before_guidance(const Component_systems<SparseSolver>& systems,
+                                                    const Field_targets& targets) const
   {
     std::vector<std::size_t> early;
-    if(!targets.has_guidance || m_systems.user_solver() || targets.alignment.weight_given ||
+    if(!targets.has_guidance || systems.user_solver() || targets.alignment.weight_given ||
        targets.alignment.eigenvalue_bound)
       return early;
     for(std::size_t c = 0; c < m_geometry.components.list.size(); ++c)
-      if(m_systems.certifies_definiteness(c) &&
+      if(systems.certifies_definiteness(c) &&
          component_constraints(m_geometry.components.list[c], targets.constraints).empty())
         early.push_back(c);
     return early;
@@ -346,7 +362,7 @@ private:
   }
 
   Mesh_geometry m_geometry;                   // constant after construction
-  Component_systems<SparseSolver> m_systems;  // the matrices and factorizations of (n, s)
+  Kept_systems<SparseSolver> m_kept;          // the matrices and factorizations of (n, s)
   Prescribed_fields m_prescribed;             // the cycle basis and the vertex Laplacian, when first needed
 };
 

@@ -25,20 +25,16 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/mass_operator.h>
 
 #include <cstddef>
-#include <exception>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-// The linear systems of each vertex field's components (user
-// manual, "The Smoothest Field" and "Aligned and Constrained Fields") and
-// what is kept of them between fields. The matrices A and M belong to one
-// connection degree n and one s; a factorization knows which matrix it
-// holds; the settings of one compute() (a user's solver, a distributed
-// backend, whether factorizations are kept) are fixed when the call starts
-// and undone when it ends, also by an exception (Call_scope).
+// The linear systems of each vertex field's components (user manual, "The
+// Smoothest Field" and "Aligned and Constrained Fields"): what is kept of
+// them between fields (Kept_systems), and the systems one compute() works
+// on under its own settings (Component_systems), passed to it as arguments.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -109,6 +105,37 @@ struct Call_policy
   const Distributed_backend* distributed = nullptr;  // the components it spreads over processes
 };
 
+// What a vertex field's engine keeps between calls: the connection of one
+// degree, A and M of one (n, s) per component with their scales, and one
+// factorization per component (a factorization knows which matrix it holds).
+template <typename SparseSolver>
+struct Kept_systems
+{
+  bool keep_factorizations = true;  // the setting of Globally_optimal_direction_field
+  Connection connection;
+  std::optional<double> matrices_s;  // the s of `matrices` (for the connection's degree); none: outdated
+  std::vector<Energy_and_mass> matrices;
+  std::vector<std::optional<double> > scales;  // per component
+  std::vector<std::unique_ptr<Component_factorization<SparseSolver> > > factorizations;
+
+  // The connection of degree n (the matrices, if any, are then outdated).
+  const Connection& connection_of_degree(const Mesh_geometry& geometry, int degree)
+  {
+    if(connection.transport.empty() || connection.degree != degree)
+    {
+      matrices_s.reset();
+      connection = compute_connection(geometry.mesh, geometry.tangent_spaces, degree);
+    }
+    return connection;
+  }
+};
+
+// The systems of one compute(): the kept ones (Kept_systems) under the
+// call's policy (Call_policy), with what the call alone uses (the user's
+// solver, the products with M once the matrices are freed, the lower
+// triangles assembled for early factorizations). Its end frees the
+// factorizations unless they are kept; a call that fails calls
+// forget_after_failure(), so that the next call starts from a consistent state.
 template <typename SparseSolver>
 class Component_systems
 {
@@ -116,61 +143,50 @@ public:
   typedef SparseSolver Solver;
   typedef Component_factorization<SparseSolver> Factorization;
   static constexpr bool detects_indefinite = Factored_matrix<SparseSolver>::detects_indefinite;
+  // Whether the aligned systems are factored in single precision where the solver can (refined solves).
+  static constexpr bool aligned_in_single_precision = true;
 
-  explicit Component_systems(const Mesh_geometry& geometry) : m_geometry(geometry) {}
-
-  // One compute(): its policy holds until the scope ends. A call that ends
-  // by an exception drops what it may have left half made (factorizations,
-  // matrices), so the next call starts from a consistent state.
-  class Call_scope
+  Component_systems(const Mesh_geometry& geometry, Kept_systems<SparseSolver>& kept,
+                    const Call_policy<SparseSolver>& policy)
+    : m_geometry(geometry), m_kept(kept), m_keep(kept.keep_factorizations), m_distributed(policy.distributed)
   {
-  public:
-    Call_scope(Component_systems& systems, const Call_policy<SparseSolver>& policy)
-      : m_systems(systems), m_exceptions(std::uncaught_exceptions())
-    {
-      m_systems.begin_call(policy);
-    }
-    ~Call_scope() { m_systems.end_call(std::uncaught_exceptions() > m_exceptions); }
-    Call_scope(const Call_scope&) = delete;
-    Call_scope& operator=(const Call_scope&) = delete;
-
-  private:
-    Component_systems& m_systems;
-    int m_exceptions;
-  };
-
-  void keep_factorizations(bool keep) { m_keep_factorizations = keep; }
-  bool keeps_factorizations() const { return m_call.keep_factorizations; }
-  bool user_solver() const { return m_call.user_factorization != nullptr; }
-  const Distributed_backend* distributed() const { return m_call.distributed; }
-  double s() const { return m_matrices_s.value_or(0.); }
-
-  // The connection of degree n (the matrices, if any, are then outdated).
-  const Connection& update_connection(int degree)
-  {
-    if(m_connection.transport.empty() || m_connection.degree != degree)
-    {
-      m_matrices_s.reset();
-      m_connection = compute_connection(m_geometry.mesh, m_geometry.tangent_spaces, degree);
-    }
-    return m_connection;
+    if(policy.user_solver == nullptr) return;
+    m_user_factorization = std::make_unique<Factorization>();
+    m_user_factorization->solver = *policy.user_solver;
   }
-  const Connection& connection() const { return m_connection; }
+  ~Component_systems()
+  {
+    if(!m_keep) m_kept.factorizations.clear();
+  }
+  Component_systems(const Component_systems&) = delete;
+  Component_systems& operator=(const Component_systems&) = delete;
+
+  // Drops what a failed call may have left half made (factorizations, matrices).
+  void forget_after_failure()
+  {
+    m_kept.factorizations.clear();
+    forget_matrices();
+  }
+
+  bool keeps_factorizations() const { return m_keep; }
+  bool user_solver() const { return m_user_factorization != nullptr; }
+  double s() const { return m_kept.matrices_s.value_or(0.); }
+  const Connection& connection() const { return m_kept.connection; }
 
   // A and M of every component for n and s, unless they are those already.
   // `shifts` (see shift_only()) asks for lower(A + shift M) alone where given.
   void update_matrices(int degree, double s, const std::vector<std::optional<double> >& shifts = {})
   {
-    update_connection(degree);
-    if(m_matrices_s == s) return;
+    m_kept.connection_of_degree(m_geometry, degree);
+    if(m_kept.matrices_s == s) return;
     forget_matrices();  // the old matrices freed before the new ones are built
-    m_matrices.resize(m_geometry.components.list.size());
-    if(!m_call.distributed)  // the first process assembles only what it solves or what the aligned field reads
-      m_matrices = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_connection,
-                                            m_geometry.components, s, shifts, &m_call.shifted_lower);
-    for(std::size_t c = 0; c < m_call.shifted_lower.size(); ++c)
-      if(m_call.shifted_lower[c].matrix.rows() != 0) m_scales[c] = m_call.shifted_lower[c].eigenvalue_scale;
-    m_matrices_s = s;
+    m_kept.matrices.resize(m_geometry.components.list.size());
+    if(!m_distributed)  // the first process assembles only what it solves or what the aligned field reads
+      m_kept.matrices = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_kept.connection,
+                                                 m_geometry.components, s, shifts, &m_shifted_lower);
+    for(std::size_t c = 0; c < m_shifted_lower.size(); ++c)
+      if(m_shifted_lower[c].matrix.rows() != 0) m_kept.scales[c] = m_shifted_lower[c].eigenvalue_scale;
+    m_kept.matrices_s = s;
   }
 
   // A and M of component c, assembled when first needed: also when
@@ -178,9 +194,9 @@ public:
   // it factors (see shift_only()).
   const Energy_and_mass& matrices(std::size_t c)
   {
-    Energy_and_mass& em = m_matrices[c];
+    Energy_and_mass& em = m_kept.matrices[c];
     if(em.energy.rows() == 0 || em.mass.rows() == 0)
-      em = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_connection,
+      em = assemble_energy_and_mass(m_geometry.mesh, m_geometry.tangent_spaces, m_kept.connection,
                                     m_geometry.components.list[c], m_geometry.components.local_index, s());
     return em;
   }
@@ -189,7 +205,7 @@ public:
   // and M are those of the current n and s, also when freed.
   double scale(std::size_t c)
   {
-    std::optional<double>& scale = m_scales[c];
+    std::optional<double>& scale = m_kept.scales[c];
     if(!scale) scale = eigenvalue_scale(matrices(c).energy, matrices(c).mass);
     return *scale;
   }
@@ -197,45 +213,36 @@ public:
   // M x for component c: with M, or from the faces once factor_aligned_system() freed it.
   Complex_vector mass_times(std::size_t c, const Complex_vector& x)
   {
-    if(m_matrices[c].mass.rows() != 0 || distributes(c) || m_call.keep_factorizations)
-      return matrices(c).mass * x;
+    if(m_kept.matrices[c].mass.rows() != 0 || distributes(c) || m_keep) return matrices(c).mass * x;
     prepare_mass_operator();
-    return m_call.mass_operator->times(m_geometry.components.list[c], m_geometry.components.local_index, x);
+    return m_mass_operator->times(m_geometry.components.list[c], m_geometry.components.local_index, x);
   }
 
   // The products with M from the faces, for a call that frees the matrices.
   void prepare_mass_operator()
   {
-    if(!m_call.keep_factorizations && !m_call.mass_operator)
-      m_call.mass_operator = std::make_unique<Mass_operator>(m_geometry.mesh, m_geometry.tangent_spaces, m_connection);
+    if(!m_keep && !m_mass_operator)
+      m_mass_operator = std::make_unique<Mass_operator>(m_geometry.mesh, m_geometry.tangent_spaces, m_kept.connection);
   }
 
   // Whether component c is spread over the processes of a distributed backend.
   bool distributes(std::size_t c) const
   {
-    return m_call.distributed != nullptr && m_call.distributed->distributes(m_geometry.components.list[c].vertices.size());
+    return m_distributed != nullptr && m_distributed->distributes(m_geometry.components.list[c].vertices.size());
   }
 
   // Whether the solver of component c tells when A - lambda M is not
   // positive definite (the distributed solves do not factor).
   bool certifies_definiteness(std::size_t c) const { return detects_indefinite && !distributes(c); }
 
-  Assembly_source assembly_source(std::size_t c) const
-  {
-    return {&m_geometry.mesh, &m_geometry.tangent_spaces, &m_connection, &m_geometry.components.list[c],
-            &m_geometry.components.local_index};
-  }
-
   // The unknowns of component c: its vertices.
   std::size_t unknowns(std::size_t c) const { return m_geometry.components.list[c].vertices.size(); }
   double eigenvalue_to_user(double lambda) const { return m_geometry.eigenvalue_to_user(lambda); }
-  // Whether the aligned systems are factored in single precision where the solver can (refined solves).
-  static constexpr bool aligned_in_single_precision = true;
 
   // The smallest eigenpair of a component that distributes(); throws if the backend failed.
   Eigen_solve_result distributed_eigenpair(std::size_t c, const Eigen_solve_options& options) const
   {
-    Eigen_solve_result eig = m_call.distributed->smallest_eigenpair(assembly_source(c), s(), options);
+    Eigen_solve_result eig = m_distributed->smallest_eigenpair(assembly_source(c), s(), options);
     if(eig.vector.size() != static_cast<Eigen::Index>(unknowns(c)))
       throw Solver_failure_error("the distributed eigen-solve failed on component " + std::to_string(c));
     return eig;
@@ -247,7 +254,7 @@ public:
                                  const Constraints& constraints, Complex_vector& u) const
   {
     const Distributed_solve_report r =
-      m_call.distributed->shifted_solve(assembly_source(c), s(), lambda, Mq, constraints, Eigen_solve_options(), u);
+      m_distributed->shifted_solve(assembly_source(c), s(), lambda, Mq, constraints, Eigen_solve_options(), u);
     return r.converged && u.size() == Mq.size();
   }
 
@@ -255,10 +262,10 @@ public:
   // keeps nothing, with the package's solver), else null.
   Energy_and_mass* matrices_of_single_use(std::size_t c)
   {
-    if(keeps_factorizations() || user_solver()) return nullptr;
+    if(m_keep || user_solver()) return nullptr;
     matrices(c);
     scale(c);  // kept beyond the matrices
-    return &m_matrices[c];
+    return &m_kept.matrices[c];
   }
 
   // The shift per component (if any) for which the assembly gives only
@@ -268,8 +275,7 @@ public:
   std::vector<std::optional<double> > shift_only(const std::vector<std::size_t>& early, double lambda) const
   {
     std::vector<std::optional<double> > shifts;
-    if(m_call.keep_factorizations || !Factored_matrix<SparseSolver>::factors_lower_triangle || early.empty())
-      return shifts;
+    if(m_keep || !Factored_matrix<SparseSolver>::factors_lower_triangle || early.empty()) return shifts;
     shifts.assign(m_geometry.components.list.size(), std::nullopt);
     for(std::size_t c : early) shifts[c] = -lambda;
     return shifts;
@@ -279,30 +285,30 @@ public:
   // the component's own one, whose symbolic analysis is reused.
   Factorization& factorization(std::size_t c)
   {
-    if(m_call.user_factorization)
+    if(m_user_factorization)
     {
       // One solver serves every component of the call, in turn: what it
-      // holds belongs to the component it served last. (Without this, the
-      // aligned field of a second component with the same lambda_t was
-      // solved with the first one's factorization.)
-      if(m_call.user_factorization_component != c)
+      // holds belongs to the component it served last (else the aligned
+      // field of a second component with the same lambda_t would be solved
+      // with the first one's factorization).
+      if(m_user_factorization_component != c)
       {
-        m_call.user_factorization->forget_aligned();
-        m_call.user_factorization->refused_lambda.reset();
-        m_call.user_factorization_component = c;
+        m_user_factorization->forget_aligned();
+        m_user_factorization->refused_lambda.reset();
+        m_user_factorization_component = c;
       }
-      return *m_call.user_factorization;
+      return *m_user_factorization;
     }
-    if(m_factorizations.size() != m_geometry.components.list.size())
-      m_factorizations.resize(m_geometry.components.list.size());
-    if(!m_factorizations[c]) m_factorizations[c] = std::make_unique<Factorization>();
-    return *m_factorizations[c];
+    std::vector<std::unique_ptr<Factorization> >& kept = m_kept.factorizations;
+    if(kept.size() != m_geometry.components.list.size()) kept.resize(m_geometry.components.list.size());
+    if(!kept[c]) kept[c] = std::make_unique<Factorization>();
+    return *kept[c];
   }
 
   // Frees component c's factorization unless factorizations are kept.
   void release_factorization(std::size_t c)
   {
-    if(!m_call.keep_factorizations && !m_call.user_factorization) m_factorizations[c].reset();
+    if(!m_keep && !m_user_factorization) m_kept.factorizations[c].reset();
   }
 
   // Factors A - lambda M of component c for its aligned field (kept for the
@@ -316,7 +322,7 @@ public:
   {
     Factorization& kept = factorization(c);
     Complex_sparse_matrix S;
-    std::vector<Shifted_lower_triangle>& lower = m_call.shifted_lower;
+    std::vector<Shifted_lower_triangle>& lower = m_shifted_lower;
     if(c < lower.size() && lower[c].matrix.rows() != 0 && lower[c].shift == -lambda)
       S.swap(lower[c].matrix);
     else
@@ -324,10 +330,10 @@ public:
       scale(c);  // kept beyond the matrices
       S = Factored_matrix<SparseSolver>::matrix_to_factor(matrices(c).energy, matrices(c).mass, -lambda);
     }
-    if(!m_call.keep_factorizations)  // swapped with empty ones: Eigen's assignment of an empty matrix keeps the memory
+    if(!m_keep)  // swapped with empty ones: Eigen's assignment of an empty matrix keeps the memory
     {
-      Complex_sparse_matrix().swap(m_matrices[c].energy);
-      Complex_sparse_matrix().swap(m_matrices[c].mass);
+      Complex_sparse_matrix().swap(m_kept.matrices[c].energy);
+      Complex_sparse_matrix().swap(m_kept.matrices[c].mass);
     }
     const bool factored_ok = kept.factor_aligned(std::move(S), kept.analyzed);
     kept.analyzed = true;
@@ -336,46 +342,21 @@ public:
   }
 
 private:
-  // What one compute() sets up and its end undoes.
-  struct Call_state
+  Assembly_source assembly_source(std::size_t c) const
   {
-    bool keep_factorizations = true;
-    std::unique_ptr<Factorization> user_factorization;  // the user's solver
-    std::size_t user_factorization_component = std::size_t(-1);  // the component it served last
-    const Distributed_backend* distributed = nullptr;
-    std::unique_ptr<Mass_operator> mass_operator;        // products with M once it is freed
-    // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
-    std::vector<Shifted_lower_triangle> shifted_lower;
-  };
-
-  void begin_call(const Call_policy<SparseSolver>& policy)
-  {
-    m_call = Call_state();
-    m_call.keep_factorizations = m_keep_factorizations;
-    if(policy.user_solver != nullptr)
-    {
-      m_call.user_factorization = std::make_unique<Factorization>();
-      m_call.user_factorization->solver = *policy.user_solver;
-    }
-    m_call.distributed = policy.distributed;
-  }
-
-  void end_call(bool failed)
-  {
-    if(!m_keep_factorizations || failed) m_factorizations.clear();
-    if(failed) forget_matrices();
-    m_call = Call_state();
+    return {&m_geometry.mesh, &m_geometry.tangent_spaces, &m_kept.connection, &m_geometry.components.list[c],
+            &m_geometry.components.local_index};
   }
 
   // The matrices of no n and s, and nothing factored from them.
   void forget_matrices()
   {
-    m_matrices_s.reset();
-    m_matrices.clear();
-    m_scales.assign(m_geometry.components.list.size(), std::nullopt);
-    m_call.mass_operator.reset();  // its kernels depend on the degree
-    m_call.shifted_lower.clear();
-    for(auto& kept : m_factorizations)  // they factor the old matrices
+    m_kept.matrices_s.reset();
+    m_kept.matrices.clear();
+    m_kept.scales.assign(m_geometry.components.list.size(), std::nullopt);
+    m_mass_operator.reset();  // its kernels depend on the degree
+    m_shifted_lower.clear();
+    for(auto& kept : m_kept.factorizations)  // they factor the old matrices
       if(kept)
       {
         kept->forget_aligned();
@@ -384,13 +365,14 @@ private:
   }
 
   const Mesh_geometry& m_geometry;
-  bool m_keep_factorizations = true;  // the setting; m_call's copy holds during a call
-  Connection m_connection;
-  std::optional<double> m_matrices_s;  // the s of m_matrices (for the connection's degree); none: outdated
-  std::vector<Energy_and_mass> m_matrices;
-  std::vector<std::optional<double> > m_scales;  // per component
-  std::vector<std::unique_ptr<Factorization> > m_factorizations;
-  Call_state m_call;
+  Kept_systems<SparseSolver>& m_kept;
+  const bool m_keep;  // the call keeps the factorizations (and A and M)
+  const Distributed_backend* const m_distributed;
+  std::unique_ptr<Factorization> m_user_factorization;  // the user's solver
+  std::size_t m_user_factorization_component = std::size_t(-1);  // the component it served last
+  std::unique_ptr<Mass_operator> m_mass_operator;  // products with M once it is freed
+  // lower(A + shift M) instead of A and M for some components, until factored (see shift_only())
+  std::vector<Shifted_lower_triangle> m_shifted_lower;
 };
 
 } // namespace internal

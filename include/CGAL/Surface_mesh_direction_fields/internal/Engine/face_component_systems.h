@@ -59,8 +59,10 @@ public:
   }
 
   std::size_t unknowns(std::size_t c) const { return m_components.list[c].faces.size(); }
-  // eigenvalues from the normalized coordinates (lengths times length_scale) to the user's
+  // eigenvalues between the normalized coordinates (lengths times length_scale) and the user's (one
+  // factor at a time: the square of length_scale may underflow)
   double eigenvalue_to_user(double lambda) const { return lambda * m_length_scale * m_length_scale; }
+  double eigenvalue_from_user(double lambda) const { return lambda / m_length_scale / m_length_scale; }
 
   const Energy_and_mass& matrices(std::size_t c) const { return m_matrices[c]; }
   Energy_and_mass* matrices_of_single_use(std::size_t) { return nullptr; }

@@ -23,10 +23,12 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -49,6 +51,52 @@ struct Point_to_array
     return Vec3{CGAL::to_double(gt.compute_x_3_object()(p)),
                 CGAL::to_double(gt.compute_y_3_object()(p)),
                 CGAL::to_double(gt.compute_z_3_object()(p))};
+  }
+};
+
+// What the classes know of the user's mesh besides the engine: its traits,
+// its index maps as functions, and the descriptor of each index.
+template <typename TriangleMesh, typename GeomTraits>
+struct Mesh_indexing
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+
+  const TriangleMesh* tmesh = nullptr;
+  GeomTraits traits;
+  std::function<std::size_t(vertex_descriptor)> index_of_vertex;
+  std::function<std::size_t(face_descriptor)> index_of_face;
+  std::vector<vertex_descriptor> vertex_of_index;
+  std::vector<face_descriptor> face_of_index;
+  double mollification = 1e-6;
+
+  // The mesh indexed as the named parameters `vertex_point_map`,
+  // `vertex_index_map`, `face_index_map` and `geom_traits` say, and
+  // `intrinsic_mollification` read.
+  template <typename NamedParameters>
+  Indexed_mesh index(const TriangleMesh& mesh, const NamedParameters& np)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    tmesh = &mesh;
+    traits = choose_parameter<GeomTraits>(get_parameter(np, internal_np::geom_traits));
+    const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, mesh));
+    const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+    const auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+    index_of_vertex = [vim](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
+    index_of_face = [fim](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
+    mollification = choose_parameter(get_parameter(np, internal_np::intrinsic_mollification), 1e-6);
+    if(!(mollification >= 0.) || !std::isfinite(mollification))
+      throw Invalid_input_error("the intrinsic mollification must be a non-negative number");
+    const Point_to_array<GeomTraits> to_array{traits};
+    Indexed_mesh indexed =
+      make_indexed_mesh(mesh, [&](vertex_descriptor v) { return to_array(get(vpm, v)); }, vim, fim);
+    vertex_of_index.resize(indexed.number_of_vertices());
+    for(vertex_descriptor v : vertices(mesh)) vertex_of_index[index_of_vertex(v)] = v;
+    face_of_index.resize(indexed.number_of_faces());
+    for(face_descriptor f : faces(mesh)) face_of_index[index_of_face(f)] = f;
+    return indexed;
   }
 };
 

@@ -32,8 +32,8 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point start)
 // The user's progress_callback of one compute(): told the fraction done at
 // each step and before each solve of the eigen-solve (through
 // Eigen_solve_options::keep_going); `false` stops the computation with
-// Computation_interrupted, which the engine's Call_scope turns into a clean
-// state for the next call.
+// Computation_interrupted, after which the engine leaves a clean state for
+// the next call (Component_systems::forget_after_failure()).
 class Progress_report
 {
 public:

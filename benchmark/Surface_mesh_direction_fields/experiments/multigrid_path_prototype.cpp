@@ -110,7 +110,7 @@ int main(int argc, char** argv)
     const Clock::time_point t = Clock::now();
     const SMDF::Direction_field_result result = field.compute(dir, CGAL::parameters::degree(degree));
     std::cout << "  direct: " << ms_since(t) << " ms, " << result.iterations << " solves, eigenvalue "
-              << result.components[0].eigenvalue << "\n";
+              << *result.components[0].eigenvalue << "\n";
   }
   const auto matrices = field.energy_and_mass_matrices(degree, 0.);
   if(spectrum > 0)

@@ -23,7 +23,7 @@
 // The seam between the mesh plumbing of
 // compute_globally_optimal_face_directions() and the method on the dual mesh
 // (user manual, section "Fields on Faces"), declared without its definitions
-// (face_field_engine_impl.h), as Field_engine.h: with
+// (Face_field_engine_impl.h), as Field_engine.h: with
 // CGAL_SURFACE_MESH_DIRECTION_FIELDS_SEPARATE_COMPILATION a program links the
 // engine of the default solver from the compiled library.
 

@@ -14,7 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_field_engine.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Face_field_engine.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
@@ -45,7 +45,7 @@
 #include <utility>
 #include <vector>
 
-// The definitions of the engine of fields on faces (face_field_engine.h):
+// The definitions of the engine of fields on faces (Face_field_engine.h):
 // the mesh's intrinsic geometry and dual connection once, then per component
 // the smallest eigenvector of the pencil on faces or the aligned /
 // constrained solve (or the prescribed singularities' parallel field), and
@@ -225,9 +225,9 @@ private:
     options.random_seed = request.random_seed;
     options.keep_going = progress.keep_going_test();
     options.transport_in_energy = true;
-    Alignment_request alignment = request.alignment;
-    alignment.lambda /= m_length_scale * m_length_scale;  // to the normalized coordinates' units
     Face_component_systems<SparseSolver> systems(m_components, m_length_scale, user_solver);
+    Alignment_request alignment = request.alignment;
+    alignment.lambda = systems.eigenvalue_from_user(alignment.lambda);
     Component_fields<Face_component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_mesh.number_of_faces(), Complex(0., 0.));
     result.components.resize(m_components.list.size());

@@ -640,7 +640,7 @@ int main(int argc, char** argv)
   if(o.scalar) remove_transport(A, M);
   const double scale = A.diagonal().real().sum() / M.diagonal().real().sum();
   // B = A + epsilon M, positive definite: a tiny positive epsilon, or minus a fraction of lambda_1
-  const double lambda_1 = direct.components[0].eigenvalue;
+  const double lambda_1 = direct.components[0].eigenvalue.value();
   const double epsilon = o.shift_fraction > 0. && !o.scalar ? -o.shift_fraction * lambda_1 : 1e-8 * scale;
 
   t = Clock::now();
