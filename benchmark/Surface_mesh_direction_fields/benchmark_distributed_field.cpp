@@ -1,9 +1,9 @@
 // The smoothest field (n = 4) of a mesh's largest component over the
 // processes of mpirun, on the distributed path (issue: "Beyond one
 // machine"): the mesh only on rank 0, the rows of A and M assembled by each
-// process from its faces (internal/Method/distributed_assembly.h), the
+// process from its faces (internal/Distributed/distributed_assembly.h), the
 // eigenpair by LOBPCG with GAMG in the gauge of a local estimate
-// (internal/Linear_algebra/distributed_eigen_solve.h), the eigenvector
+// (internal/Distributed/distributed_eigen_solve.h), the eigenvector
 // gathered on rank 0. Prints the time of each step, the peak resident memory
 // of every process, the edge cut and the singular faces.
 //
@@ -21,8 +21,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
 
 #include "largest_component.h"

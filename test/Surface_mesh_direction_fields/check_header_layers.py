@@ -17,7 +17,7 @@ import sys
 VOCABULARY = {"exceptions.h", "alignment.h", "Direction_field_result.h"}  # include nothing of the package
 # the solvers' public headers: usable on their own, over the linear algebra alone (the engine sees a
 # solver type only; the front end that chooses it includes it)
-SOLVER = {"Cholmod_supernodal_solver.h", "Petsc_solver_traits.h"}
+SOLVER = {"Cholmod_supernodal_solver.h"}
 
 # what each layer may include, besides itself
 MAY_USE = {
@@ -28,6 +28,8 @@ MAY_USE = {
     "Method": {"vocabulary", "base", "Linear_algebra", "Mesh"},
     "solver": {"vocabulary", "base", "Linear_algebra"},
     "Engine": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method"},
+    # the processes' path (PETSc, SLEPc, MPI), behind the engine's Distributed_backend (Method)
+    "Distributed": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method"},
     "IO internals": {"vocabulary", "base", "public"},
     "public": None,  # anything
 }

@@ -112,10 +112,7 @@ public:
   Face_direction_field_result compute(FaceDirectionMap face_direction_map,
                                       const NamedParameters& np = parameters::default_values()) const
   {
-    using parameters::get_parameter;
-    internal::check_field_parameters(parameters::choose_parameter(get_parameter(np, internal_np::degree), default_degree),
-                                     parameters::choose_parameter(get_parameter(np, internal_np::smoothness_parameter), 0.));
-    const internal::Point_to_array<GeomTraits> to_array{m_indexing.traits};
+    const internal::Point_to_array<GeomTraits> to_array{m_indexing.traits};  // n and s are checked as they are read
     const internal::Face_field_request request =
       internal::face_field_request(*m_indexing.tmesh, np, m_indexing.face_of_index, m_indexing.index_of_vertex,
                                    to_array);

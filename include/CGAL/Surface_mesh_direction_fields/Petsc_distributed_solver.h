@@ -19,9 +19,9 @@
 // the default solver, which estimates each process's block
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_supernodal_solver.h>
 #endif
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_linear_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_linear_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_assembly.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/distributed_backend.h>
 
 #include <cstddef>

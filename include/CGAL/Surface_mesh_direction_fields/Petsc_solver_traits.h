@@ -14,7 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/petsc_calls.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_vector.h>

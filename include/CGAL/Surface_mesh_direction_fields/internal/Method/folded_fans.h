@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstddef>
 #include <map>
 #include <queue>
@@ -73,12 +74,12 @@ inline bool projected_frame(const Indexed_mesh& m, std::size_t v, const Vec3& no
   return true;
 }
 
-// The angle of the projection of `side` in the frame, in (-pi, pi]; NaN where
-// the side is (nearly) parallel to the normal.
-inline double projected_angle(const Projected_frame& frame, const Vec3& side)
+// The angle of the projection of `side` in the frame, in (-pi, pi]; none
+// where the side is (nearly) parallel to the normal.
+inline std::optional<double> projected_angle(const Projected_frame& frame, const Vec3& side)
 {
   const double x = dot(side, frame.x), y = dot(side, frame.y);
-  if(!(std::sqrt(x * x + y * y) > 1e-8 * norm(side))) return std::nan("");
+  if(!(std::sqrt(x * x + y * y) > 1e-8 * norm(side))) return std::nullopt;
   return std::atan2(y, x);
 }
 
@@ -212,14 +213,13 @@ inline bool lay_out_projected_fan(const Indexed_mesh& m, std::size_t v, const Ve
   Projected_frame frame;
   if(!projected_frame(m, v, normal, frame)) return false;
   for(std::size_t corner : m.fan(v))
-    if(std::isnan(projected_angle(frame, corner_side(m, corner, 1))) ||
-       std::isnan(projected_angle(frame, corner_side(m, corner, 2))))
+    if(!projected_angle(frame, corner_side(m, corner, 1)) || !projected_angle(frame, corner_side(m, corner, 2)))
       return false;
   for(std::size_t corner : m.fan(v))
   {
-    const double first = projected_angle(frame, corner_side(m, corner, 1));
+    const double first = *projected_angle(frame, corner_side(m, corner, 1));
     ts.corner_theta[corner] = first;
-    ts.corner_width[corner] = reduce_angle(projected_angle(frame, corner_side(m, corner, 2)) - first);
+    ts.corner_width[corner] = reduce_angle(*projected_angle(frame, corner_side(m, corner, 2)) - first);
   }
   ts.angle_scale[v] = 1.;
   ts.projected_fan[v] = 1;

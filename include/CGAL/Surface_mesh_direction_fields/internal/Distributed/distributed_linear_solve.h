@@ -9,12 +9,12 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LINEAR_SOLVE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LINEAR_SOLVE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LINEAR_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LINEAR_SOLVE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_eigen_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_eigen_solve.h>
 
 #include <petscksp.h>
 
@@ -152,4 +152,4 @@ inline Distributed_linear_solve_result shifted_solve_in_gauge(Mat A, Mat M, doub
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LINEAR_SOLVE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LINEAR_SOLVE_H

@@ -9,12 +9,12 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_DISTRIBUTED_ASSEMBLY_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_DISTRIBUTED_ASSEMBLY_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_ASSEMBLY_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_ASSEMBLY_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/petsc_calls.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
@@ -284,4 +284,4 @@ inline Distributed_matrices assemble_distributed(MPI_Comm comm, const Assembly_s
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_METHOD_DISTRIBUTED_ASSEMBLY_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_ASSEMBLY_H

@@ -10,15 +10,15 @@
 // Author(s)     : The Surface_mesh_direction_fields authors
 
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LOBPCG_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LOBPCG_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LOBPCG_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LOBPCG_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/petsc_calls.h>
 
 #include <slepceps.h>
 
@@ -207,4 +207,4 @@ private:
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_LOBPCG_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_LOBPCG_H

@@ -9,16 +9,16 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_EIGEN_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_EIGEN_SOLVE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/distributed_lobpcg.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/distributed_lobpcg.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/petsc_calls.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Distributed/petsc_calls.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/shifted_matrix.h>
 
 #include <slepceps.h>
@@ -504,4 +504,4 @@ inline Complex_vector gather_on_first_process(Vec x)
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_DISTRIBUTED_EIGEN_SOLVE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_DISTRIBUTED_EIGEN_SOLVE_H

@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_PETSC_CALLS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_PETSC_CALLS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_PETSC_CALLS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_PETSC_CALLS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -164,4 +164,4 @@ auto run_collective_step(const char* step, Step&& run) -> decltype(run())
       ::CGAL::Surface_mesh_direction_fields::internal::abort_after_mpi_error(cgal_smdf_code_, #__VA_ARGS__); \
   } while(false)
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_PETSC_CALLS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_DISTRIBUTED_PETSC_CALLS_H
