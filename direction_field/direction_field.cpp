@@ -56,6 +56,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <functional>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double> Kernel;
@@ -335,7 +336,7 @@ private:
 
 // The library call, with the named parameters the options ask for.
 void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Processes& processes,
-                   Computed_field& field)
+                   Progress& progress, Computed_field& field)
 {
   const std::vector<Vector_3> guidance = o.guidance.empty() ? std::vector<Vector_3>() : read_guidance(o, input);
   auto directions = CGAL::make_property_map(field.directions);
@@ -351,7 +352,8 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
                                                 ? SMDF::Principal_curvature_estimate::HOPF_DIFFERENTIAL
                                                 : SMDF::Principal_curvature_estimate::QUADRIC_FIT)
                 .vertex_magnitude_map(CGAL::make_property_map(field.magnitudes))
-                .singularities_output_iterator(std::back_inserter(field.singular_faces));
+                .singularities_output_iterator(std::back_inserter(field.singular_faces))
+                .progress_callback(std::function<bool(double)>([&progress](double f) { return progress.fraction(f); }));
   // --feature-angle: the edges whose faces meet at more than DEG from flat
   std::vector<unsigned char> feature_storage(input.mesh.number_of_edges(), 0);
   auto is_feature = CGAL::make_property_map(feature_storage);
@@ -524,7 +526,8 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
   {
     const std::vector<std::pair<Vertex_index, int> > prescription =
       o.prescribe.empty() ? std::vector<std::pair<Vertex_index, int> >() : read_vertex_prescription(o, input.mesh);
-    field = face_field_run::compute(o, input.mesh, o.prescribe.empty() ? nullptr : &prescription);
+    field = face_field_run::compute(o, input.mesh, o.prescribe.empty() ? nullptr : &prescription,
+                                    [&progress](double done) { return progress.fraction(done); });
   }
   catch(const SMDF::Invalid_input_error& e)
   {
@@ -592,6 +595,7 @@ static int run(int argc, char** argv)
     Output_files outputs;
     register_outputs(o, outputs);
     exchange_files::check_mesh_out_name(o.mesh_out);
+    exchange_files::warn_about_vtk_names(o.vtk, o.vtk_singularities);
     progress = Progress(o.quiet);
     Program_timings timings;
     if(point_set_run::is_point_set_file(o.mesh)) return point_set_run::run(o, progress, timings, outputs);
@@ -601,14 +605,14 @@ static int run(int argc, char** argv)
     if(soup.number_of_polygons() == 0 && !soup.points.empty() && point_set_run::extension_of(o.mesh) == "ply")
       return point_set_run::run(o, progress, timings, outputs, &soup);
     progress.begin("repairing", timings.repair);
-    const Repaired_mesh<Mesh> input = repair_into_mesh<Mesh>(soup, o.mesh);
+    const Repaired_mesh<Mesh> input = repair_into_mesh<Mesh>(soup, "'" + o.mesh + "'");
     soup = Polygon_soup();
     progress.end();
     if(o.on == "faces") return run_on_faces(o, input, progress, timings, outputs);
     Computed_field field(input.mesh);
     double compute_ms = 0.;
     progress.begin("computing the field", compute_ms);
-    compute_field(o, input, processes, field);
+    compute_field(o, input, processes, progress, field);
     processes.finish();
     progress.end();
     report_computation(progress, field.result);

@@ -15,7 +15,9 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include <ostream>
+#include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace exchange_files {
@@ -31,6 +33,21 @@ inline void write_streamlines(const std::string& path, std::ostream& os, const s
   else if(extension == "vtk") SMDF::IO::write_field_lines_VTK(os, lines, degree);
   else if(extension == "obj") SMDF::IO::write_field_lines_OBJ(os, lines);
   else SMDF::IO::write_field_lines_polylines(os, lines);
+}
+
+// --vtk and --vtk-singularities write VTK's XML format for a .vtu name and
+// the legacy format for any other: a name with another extension is written,
+// as it always was, with a warning that says which format it holds.
+inline void warn_about_vtk_names(const std::string& vtk, const std::string& vtk_singularities)
+{
+  for(const auto& [option, path] : {std::pair<const char*, const std::string&>("--vtk", vtk),
+                                    std::pair<const char*, const std::string&>("--vtk-singularities", vtk_singularities)})
+  {
+    const std::string extension = soup_reading::lower_case_extension(path);
+    if(!extension.empty() && extension != "vtk" && extension != "vtu")  // not for devices such as /dev/stdout
+      std::cerr << "direction_field: warning: " << option << " '" << path
+                << "' is written in VTK's legacy format (.vtk); a .vtu name gives VTK's XML format\n";
+  }
 }
 
 // --mesh-out writes OFF, OBJ or PLY, chosen by the name (write_mesh()):

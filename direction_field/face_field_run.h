@@ -20,6 +20,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <functional>
 #include <vector>
 
 namespace face_field_run {
@@ -83,7 +84,8 @@ struct Face_field
 // The library call with the options' named parameters; the matching per face side.
 template <typename Mesh>
 Face_field compute(const Options& o, const Mesh& mesh,
-                   const std::vector<std::pair<typename Mesh::Vertex_index, int> >* prescription)
+                   const std::vector<std::pair<typename Mesh::Vertex_index, int> >* prescription,
+                   const std::function<bool(double)>& progress)
 {
   typedef typename Mesh::Vertex_index Vertex_index;
   Face_field field;
@@ -101,7 +103,8 @@ Face_field compute(const Options& o, const Mesh& mesh,
               .edge_is_feature_map(CGAL::make_property_map(is_feature))
               .singularities_output_iterator(std::back_inserter(singular))
               .edge_matching_map(CGAL::make_property_map(matching))
-              .singularity_cancellation_radius(o.cancel_singularities);
+              .singularity_cancellation_radius(o.cancel_singularities)
+              .progress_callback(progress);
   auto direction_map = CGAL::make_property_map(directions);
   if(prescription)
     field.result = SMDF::compute_globally_optimal_face_directions(mesh, direction_map,

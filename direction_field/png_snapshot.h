@@ -7,6 +7,8 @@
 #ifndef SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PNG_SNAPSHOT_H
 #define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_PNG_SNAPSHOT_H
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -217,7 +219,12 @@ inline const unsigned char* glyph_rows(char c)
     {'/', {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x00}}, {'=', {0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00}},
     {':', {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}}, {'n', {0x00, 0x00, 0x16, 0x19, 0x11, 0x11, 0x11}},
     {'i', {0x04, 0x00, 0x0C, 0x04, 0x04, 0x04, 0x0E}}, {'d', {0x01, 0x01, 0x0D, 0x13, 0x11, 0x11, 0x0F}},
-    {'e', {0x00, 0x00, 0x0E, 0x11, 0x1F, 0x10, 0x0E}}, {'x', {0x00, 0x00, 0x11, 0x0A, 0x04, 0x0A, 0x11}}};
+    {'e', {0x00, 0x00, 0x0E, 0x11, 0x1F, 0x10, 0x0E}}, {'x', {0x00, 0x00, 0x11, 0x0A, 0x04, 0x0A, 0x11}},
+    {'o', {0x00, 0x00, 0x0E, 0x11, 0x11, 0x11, 0x0E}}, {'s', {0x00, 0x00, 0x0F, 0x10, 0x0E, 0x01, 0x1E}},
+    {'g', {0x00, 0x00, 0x0F, 0x11, 0x0F, 0x01, 0x0E}}, {'u', {0x00, 0x00, 0x11, 0x11, 0x11, 0x13, 0x0D}},
+    {'l', {0x0C, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E}}, {'a', {0x00, 0x00, 0x0E, 0x01, 0x0F, 0x11, 0x0F}},
+    {'r', {0x00, 0x00, 0x16, 0x19, 0x10, 0x10, 0x10}}, {'t', {0x08, 0x08, 0x1C, 0x08, 0x08, 0x09, 0x06}},
+    {'y', {0x00, 0x00, 0x11, 0x11, 0x0F, 0x01, 0x0E}}};
   for(const auto& g : font)
     if(g.c == c) return g.rows;
   return nullptr;  // a space
@@ -260,12 +267,13 @@ struct View
 };
 
 // A view along `direction` framing the points tightly in the panel at (x0, y0).
-inline View make_view(const std::vector<V3>& points, V3 direction, int x0, int y0, int size)
+// `up` is the direction shown upwards where the view allows.
+inline View make_view(const std::vector<V3>& points, V3 direction, V3 up, int x0, int y0, int size)
 {
   View v;
   v.direction = unit(direction);
-  V3 up0 = {0, 1, 0};
-  if(std::abs(dot(up0, v.direction)) > 0.95) up0 = {0, 0, 1};
+  V3 up0 = up;
+  if(std::abs(dot(up0, v.direction)) > 0.95) up0 = V3{up[2], up[0], up[1]};  // another axis
   v.right = unit(cross(up0, v.direction));
   v.up = cross(v.direction, v.right);
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
@@ -344,15 +352,17 @@ inline void draw_glyphs(const Scene& s, const View& view, const Anchors& anchors
     if(ci < 0) continue;
     const std::size_t i = static_cast<std::size_t>(ci);
     const V3 d = s.directions[i], e = cross(unit(anchors.normals[i]), d);
+    // a single direction is drawn across its anchor, as long as a cross is wide
+    const V3 tail = s.degree == 1 ? view.project(anchors.points[i] - glyph * d) : screen[i];
     for(int k = 0; k < s.degree; ++k)
     {
       const double a = 2. * 3.14159265358979323846 * k / s.degree;
       const V3 dk = std::cos(a) * d + std::sin(a) * e;
       const V3 tip = view.project(anchors.points[i] + glyph * dk);
-      canvas.line(screen[i], tip, {20, 20, 20}, 3.);
-      const double length = std::hypot(tip[0] - screen[i][0], tip[1] - screen[i][1]);
+      canvas.line(tail, tip, {20, 20, 20}, 3.);
+      const double length = std::hypot(tip[0] - tail[0], tip[1] - tail[1]);
       if(s.degree % 2 == 1 && length > 2.)  // odd n: the directions have a sign, an arrowhead shows it
-        draw_chevron(canvas, tip, (1. / length) * (tip - screen[i]), 0.4 * length, {20, 20, 20});
+        draw_chevron(canvas, tip, (1. / length) * (tip - tail), (s.degree == 1 ? 0.3 : 0.4) * length, {20, 20, 20});
     }
   }
 }
@@ -439,13 +449,52 @@ inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
   }
 }
 
-// Renders the scene from four directions (the vertices of a tetrahedron, the
-// first one a three-quarter view): every face turned to the outside is seen
-// from less than 71 degrees in one of them. A legend below. Writes a PNG.
-inline bool render(const Scene& s, std::ostream& os, int panel = 560)
+// The points' principal axes, longest first (unit vectors), and their spreads.
+inline std::pair<std::array<V3, 3>, std::array<double, 3> > principal_axes(const std::vector<V3>& points)
 {
-  if(s.points.empty() || s.triangles.empty()) return false;
-  // the tetrahedron's directions, rotated so that the first is the front view
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for(const V3& p : points) mean += Eigen::Vector3d(p[0], p[1], p[2]) / static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(const V3& p : points)
+  {
+    const Eigen::Vector3d q = Eigen::Vector3d(p[0], p[1], p[2]) - mean;
+    covariance += q * q.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);  // ascending eigenvalues
+  std::array<V3, 3> axes;
+  std::array<double, 3> spreads;
+  for(int k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector3d a = eigen.eigenvectors().col(2 - k);
+    axes[static_cast<std::size_t>(k)] = V3{a[0], a[1], a[2]};
+    spreads[static_cast<std::size_t>(k)] = std::sqrt((std::max)(0., eigen.eigenvalues()[2 - k]));
+  }
+  return {axes, spreads};
+}
+
+struct View_set
+{
+  std::array<V3, 4> directions;
+  V3 up;
+};
+
+// Four directions to look from. In general the vertices of a tetrahedron, the
+// first one a three-quarter view, with the file's y axis up: every face turned
+// to the outside is seen from less than 71 degrees in one of them. A sheet (its
+// least spread below a fifth of the next one) would be seen at a graze from
+// all four: it is seen from both sides instead, straight and tilted by 50
+// degrees about its longest axis, which is shown upwards (along the panel's
+// diagonal if the sheet is a strip, so that it fills more of the panel).
+inline View_set view_directions(const std::vector<V3>& points)
+{
+  const auto [axes, spreads] = principal_axes(points);
+  if(spreads[2] < 0.2 * spreads[1])
+  {
+    const V3 &e1 = axes[0], &e2 = axes[1], &e3 = axes[2];
+    const double c = std::cos(0.87), t = std::sin(0.87);  // 50 degrees
+    const V3 up = spreads[1] < 0.5 * spreads[0] ? unit(e1 + e2) : e1;
+    return {{unit(e3 + 0.15 * e2), unit(-1. * e3 - 0.15 * e2), c * e3 - t * e2, -c * e3 + t * e2}, up};
+  }
   const V3 front = unit(V3{0.55, 0.35, 0.76}), a = unit(V3{1, 1, 1});
   const V3 axis = cross(a, front);
   const double sin_angle = norm(axis), cos_angle = dot(a, front);
@@ -454,7 +503,16 @@ inline bool render(const Scene& s, std::ostream& os, int panel = 560)
     const V3 k = (1. / sin_angle) * axis;
     return cos_angle * v + sin_angle * cross(k, v) + ((1. - cos_angle) * dot(k, v)) * k;
   };
-  const V3 directions[4] = {front, rotate(unit(V3{1, -1, -1})), rotate(unit(V3{-1, 1, -1})), rotate(unit(V3{-1, -1, 1}))};
+  return {{front, rotate(unit(V3{1, -1, -1})), rotate(unit(V3{-1, 1, -1})), rotate(unit(V3{-1, -1, 1}))},
+          V3{0, 1, 0}};
+}
+
+// Renders the scene from four directions (view_directions()), a legend below.
+// Writes a PNG.
+inline bool render(const Scene& s, std::ostream& os, int panel = 560)
+{
+  if(s.points.empty() || s.triangles.empty()) return false;
+  const View_set views = view_directions(s.points);
   Anchors anchors;
   if(!s.directions_on_faces) anchors.points = s.points;
   anchors.normals.assign(anchors.points.size(), V3{0, 0, 0});
@@ -475,7 +533,10 @@ inline bool render(const Scene& s, std::ostream& os, int panel = 560)
   const int legend = 70;
   Canvas canvas(2 * panel, 2 * panel + legend);
   for(int v = 0; v < 4; ++v)
-    draw_view(s, make_view(s.points, directions[v], (v % 2) * panel, (v / 2) * panel, panel), mean_edge, anchors, canvas);
+  {
+    const View view = make_view(s.points, views.directions[v], views.up, (v % 2) * panel, (v / 2) * panel, panel);
+    draw_view(s, view, mean_edge, anchors, canvas);
+  }
   for(int x = 0; x < 2 * panel; ++x) canvas.set(x, panel, {170, 170, 170});  // the panels' borders
   for(int y = 0; y < 2 * panel; ++y) canvas.set(panel, y, {170, 170, 170});
   draw_legend(s, 2 * panel, canvas);

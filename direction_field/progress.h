@@ -40,8 +40,24 @@ public:
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
     if(target_) *target_ += ms;
     target_ = nullptr;
+    if(talk_ && percent_shown_) std::fprintf(stderr, "\rdirection_field: %s ... %.0f ms    \n", step_.c_str(), ms);
+    else if(talk_) std::fprintf(stderr, " %.0f ms\n", ms);
     step_.clear();
-    if(talk_) std::fprintf(stderr, " %.0f ms\n", ms);
+    percent_shown_ = false;
+  }
+  // The fraction done within the step (the library's progress_callback), shown
+  // on the step's line as a percentage, at most four times a second. Always
+  // true: the run goes on.
+  bool fraction(double done)
+  {
+    if(!talk_ || step_.empty()) return true;
+    const auto now = std::chrono::steady_clock::now();
+    if(percent_shown_ && now - shown_at_ < std::chrono::milliseconds(250)) return true;
+    shown_at_ = now;
+    percent_shown_ = true;
+    std::fprintf(stderr, "\rdirection_field: %s ... %3.0f%%", step_.c_str(), 100. * done);
+    std::fflush(stderr);
+    return true;
   }
   // A line of its own (the library's steps, reported as they happen).
   void say(const std::string& line) const
@@ -53,7 +69,8 @@ private:
   bool talk_;
   double* target_ = nullptr;
   std::string step_;
-  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point start_, shown_at_;
+  bool percent_shown_ = false;
 };
 
 // The program's own steps, in milliseconds.

@@ -6,6 +6,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_PYTHON_POINT_SET_H
 
 #include "python_options.h"
+#include "python_pickling.h"
 
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_point_set_directions.h>
 
@@ -58,12 +59,6 @@ py::array_t<T> rows_array(std::size_t rows, std::size_t columns)
                       : py::array_t<T>({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)});
 }
 
-template <typename T>
-void make_read_only(py::array_t<T>& a)
-{
-  a.attr("setflags")(py::arg("write") = false);
-}
-
 void fill_point_set_arrays(const std::vector<Kernel::Vector_3>& directions, Point_set_field& r)
 {
   const std::size_t np = directions.size(), nt = r.report.triangles.size();
@@ -101,13 +96,7 @@ void fill_point_set_arrays(const std::vector<Kernel::Vector_3>& directions, Poin
     s(py::ssize_t(k), 0) = static_cast<long long>(r.report.singular_triangles[k].first);
     s(py::ssize_t(k), 1) = r.report.singular_triangles[k].second;
   }
-  make_read_only(r.directions);
-  make_read_only(r.normals);
-  make_read_only(r.magnitudes);
-  make_read_only(r.triangles);
-  make_read_only(r.holders);
-  make_read_only(r.on_surface);
-  make_read_only(r.singular_triangles);
+  make_read_only(r.directions, r.normals, r.magnitudes, r.triangles, r.holders, r.on_surface, r.singular_triangles);
 }
 
 std::vector<Kernel::Point_3> point_rows(const py::object& P)
@@ -164,6 +153,62 @@ const char* const point_set_doc =
   "on_surface (T,: the triangles the singularities are read on), singular_triangles (k, 2: triangle, k; the\n"
   "index is k / n), and the report (index_sum, surface_euler_characteristic, surface_is_closed, eigenvalues).";
 
+// The state for pickle and copy: the arrays, the degree, the report's flags
+// and counts, its components and timings (the report's other vectors are the
+// arrays).
+py::tuple point_set_state(const Point_set_field& r)
+{
+  const SMDF::Point_set_direction_field_result& p = r.report;
+  py::list components;
+  for(const auto& c : p.components) components.append(component_state(c));
+  return py::make_tuple(r.directions, r.normals, r.magnitudes, r.triangles, r.holders, r.on_surface,
+                        r.singular_triangles, r.degree,
+                        py::make_tuple(p.normals_estimated, p.number_of_points_without_triangles,
+                                       p.surface_euler_characteristic, p.surface_is_closed, p.normals_ms),
+                        components, timings_state(p.timings));
+}
+
+Point_set_field point_set_from(const py::tuple& state)
+{
+  State_reader read(state);
+  Point_set_field r;
+  r.directions = read.next<py::array_t<double> >();
+  r.normals = read.next<py::array_t<double> >();
+  r.magnitudes = read.next<py::array_t<double> >();
+  r.triangles = read.next<py::array_t<long long> >();
+  r.holders = read.next<py::array_t<unsigned char> >();
+  r.on_surface = read.next<py::array_t<bool> >();
+  r.singular_triangles = read.next<py::array_t<long long> >();
+  r.degree = read.next<int>();
+  check_state_degree(r.degree);
+  const py::ssize_t np = r.directions.ndim() > 0 ? r.directions.shape(0) : -1;
+  const py::ssize_t nt = r.triangles.ndim() > 0 ? r.triangles.shape(0) : -1;
+  check_state_shape(r.directions, {np, 3}, "directions");
+  check_state_shape(r.normals, {np, 3}, "normals");
+  check_state_shape(r.magnitudes, {np}, "magnitudes");
+  check_state_shape(r.triangles, {nt, 3}, "triangles");
+  check_state_shape(r.holders, {nt}, "holders");
+  check_state_shape(r.on_surface, {nt}, "on_surface");
+  check_state_shape(r.singular_triangles, {-1, 2}, "singular_triangles");
+  SMDF::Point_set_direction_field_result& p = r.report;
+  State_reader flags(read.next<py::tuple>());
+  p.normals_estimated = flags.next<bool>();
+  p.number_of_points_without_triangles = flags.next<std::size_t>();
+  p.surface_euler_characteristic = flags.next<int>();
+  p.surface_is_closed = flags.next<bool>();
+  p.normals_ms = flags.next<double>();
+  for(const py::handle& c : read.next<py::list>()) p.components.push_back(component_from(c.cast<py::tuple>()));
+  p.timings = timings_from(read.next<py::tuple>());
+  const auto s = r.singular_triangles.unchecked<2>();
+  for(py::ssize_t k = 0; k < s.shape(0); ++k)
+  {
+    if(s(k, 0) < 0 || s(k, 0) >= nt) refuse("the pickled state's singular_triangles are not among its triangles");
+    p.singular_triangles.emplace_back(static_cast<std::size_t>(s(k, 0)), static_cast<int>(s(k, 1)));
+  }
+  make_read_only(r.directions, r.normals, r.magnitudes, r.triangles, r.holders, r.on_surface, r.singular_triangles);
+  return r;
+}
+
 void bind_point_set_field(py::module_& m)
 {
   py::class_<Point_set_field>(m, "PointSetField", "The field of a point set: read-only arrays and its report.")
@@ -195,6 +240,11 @@ void bind_point_set_field(py::module_& m)
       bool all = true;
       for(const auto& c : r.report.components) all = all && c.converged;
       return all;
+    })
+    .def(py::pickle(&point_set_state, &point_set_from))
+    .def("__repr__", [](const Point_set_field& r) {
+      return "<PointSetField n=" + std::to_string(r.degree) + ", " + std::to_string(r.directions.shape(0)) +
+             " points, " + std::to_string(r.singular_triangles.shape(0)) + " singular triangles>";
     });
   m.def("compute_point_set_directions",
         [](const py::object& P, const py::kwargs& kw) { return compute_point_set_directions(P, kw); }, py::arg("P"),

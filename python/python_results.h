@@ -563,16 +563,9 @@ void check_readable(const std::string& path)
   throw py::error_already_set();
 }
 
-py::tuple read_mesh(const py::object& path_object, bool with_maps)
+// (V, F, repairs[, maps]) of a repaired mesh, as read_mesh() and repair_mesh() return them.
+py::tuple mesh_arrays(const Repaired_mesh<Mesh>& in, bool with_maps)
 {
-  const std::string path = path_argument(path_object);
-  check_readable(path);
-  Repaired_mesh<Mesh> in;
-  {
-    py::gil_scoped_release release;
-    try { in = read_and_repair_mesh<Mesh>(path); }
-    catch(const Mesh_input_error& e) { throw py::value_error(e.what()); }
-  }
   py::array_t<double> V({static_cast<py::ssize_t>(in.mesh.number_of_vertices()), py::ssize_t(3)});
   py::array_t<long long> F({static_cast<py::ssize_t>(in.mesh.number_of_faces()), py::ssize_t(3)});
   auto v = V.mutable_unchecked<2>();
@@ -597,6 +590,74 @@ py::tuple read_mesh(const py::object& path_object, bool with_maps)
   repairs["unused_vertices_removed"] = r.unused_vertices;
   if(with_maps) return py::make_tuple(V, F, repairs, file_maps(in));
   return py::make_tuple(V, F, repairs);
+}
+
+py::tuple read_mesh(const py::object& path_object, bool with_maps)
+{
+  const std::string path = path_argument(path_object);
+  check_readable(path);
+  Repaired_mesh<Mesh> in;
+  {
+    py::gil_scoped_release release;
+    try { in = read_and_repair_mesh<Mesh>(path); }
+    catch(const Mesh_input_error& e) { throw py::value_error(e.what()); }
+  }
+  return mesh_arrays(in, with_maps);
+}
+
+// The polygons of F (an integer array of shape (m, k), k >= 3, or a sequence
+// of index sequences of any lengths) into `soup`, each index checked.
+void add_polygons(const py::object& F, Polygon_soup& soup)
+{
+  const bool rows = py::isinstance<py::array>(F);
+  std::vector<Index_array> polygons;
+  if(rows) polygons.push_back(integer_array(F, "F"));
+  else
+    for(const py::handle& polygon : py::iterable(F))
+      polygons.push_back(integer_array(py::reinterpret_borrow<py::object>(polygon), "a polygon of F"));
+  if(rows && (polygons[0].ndim() != 2 || polygons[0].shape(1) < 3))
+    refuse("F must be an array of shape (number of faces, k) with k >= 3, or a list of polygons");
+  const std::size_t count = rows ? static_cast<std::size_t>(polygons[0].shape(0)) : polygons.size();
+  const std::size_t corners = rows ? static_cast<std::size_t>(polygons[0].shape(1)) : 0;
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    const Index_array& p = rows ? polygons[0] : polygons[i];
+    const long long* first = p.data() + (rows ? i * corners : 0);
+    const std::size_t size = rows ? corners : static_cast<std::size_t>(p.size());
+    if(!rows && (p.ndim() != 1 || size < 3))
+      refuse("F's polygon " + std::to_string(i) + " needs at least 3 vertex indices");
+    for(std::size_t c = 0; c < size; ++c)
+    {
+      if(first[c] < 0 || static_cast<std::size_t>(first[c]) >= soup.points.size())
+        refuse("F's polygon " + std::to_string(i) + " refers to vertex " + std::to_string(first[c]) + ", not in V");
+      soup.corners.push_back(static_cast<std::size_t>(first[c]));
+    }
+    soup.end_polygon();
+  }
+}
+
+// V and F repaired in memory, exactly as read_mesh() repairs a file's.
+py::tuple repair_mesh(const py::object& V, const py::object& F, bool with_maps)
+{
+  const Float_array points = real_array(V, "V", "an array of numbers of shape (number of vertices, 3)");
+  if(points.ndim() != 2 || points.shape(1) != 3) refuse("V must be an array of shape (number of vertices, 3)");
+  Polygon_soup soup;
+  const auto p = points.unchecked<2>();
+  for(py::ssize_t i = 0; i < p.shape(0); ++i)
+  {
+    if(!(std::isfinite(p(i, 0)) && std::isfinite(p(i, 1)) && std::isfinite(p(i, 2))))
+      refuse("V row " + std::to_string(i) + " has a non-finite coordinate");
+    soup.points.push_back({p(i, 0), p(i, 1), p(i, 2)});
+  }
+  add_polygons(F, soup);
+  if(soup.number_of_polygons() == 0) refuse("F holds no face");
+  Repaired_mesh<Mesh> in;
+  {
+    py::gil_scoped_release release;
+    try { in = repair_into_mesh<Mesh>(soup, "F"); }
+    catch(const Mesh_input_error& e) { throw py::value_error(e.what()); }
+  }
+  return mesh_arrays(in, with_maps);
 }
 
 // The object behind `self`; an instance made by __new__ alone has none.
@@ -639,12 +700,10 @@ void bind_field(py::module_& m)
           return field.compute(kwargs, true);
         },
         py::arg("V"), py::arg("F"), compute_doc);
-  m.def("read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("with_maps") = false,
-        "Reads an OFF, OBJ, PLY or STL file with the command-line program's readers and repair; returns\n"
-        "(V, F, repairs): float64 (|V|, 3), int64 (|F|, 3), and a dict of what the repair changed; with\n"
-        "with_maps=True also a dict of int64 arrays between the file and the mesh: 'vertex_of_file_vertex'\n"
-        "(-1: a point no face uses; merged points share a vertex), 'file_vertex_of_vertex' and\n"
-        "'file_face_of_face' (the polygon of the file each triangle comes from).");
+  m.def("_read_mesh", &read_mesh, py::arg("path"), py::kw_only(), py::arg("with_maps") = false,
+        "(V, F, repairs[, maps]) of a file (the package's read_mesh() makes them a MeshArrays)");
+  m.def("_repair_mesh", &repair_mesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("with_maps") = false,
+        "(V, F, repairs[, maps]) of arrays (the package's repair_mesh() makes them a MeshArrays)");
 }
 
 }  // namespace

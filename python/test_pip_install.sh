@@ -21,8 +21,15 @@ unset PYTHONPATH
 
 /usr/bin/python3 -m venv --system-site-packages venv
 py="$work/venv/bin/python"
-(cd "$source" && SMDF_CMAKE_BUILD_DIR="$build" "$py" -m pip install --no-build-isolation --no-index .) > pip.log 2>&1 \
+tree_before=$(git -C "$source" status --porcelain --ignored 2> /dev/null || true)
+(cd "$source" && SMDF_CMAKE_BUILD_DIR="$build" "$py" -m pip install -v --no-build-isolation --no-index .) > pip.log 2>&1 \
   || { tail -20 pip.log; fail "pip install"; }
+# pip writes nothing into the work tree (its builds live in the build folder or the user's cache)
+[ "$(git -C "$source" status --porcelain --ignored 2> /dev/null || true)" = "$tree_before" ] \
+  || fail "pip install left files in the work tree: $(git -C "$source" status --porcelain --ignored | head -5)"
+# what the build said it was doing (pip -v shows it; a terminal sees it without -v)
+grep -q "surface-mesh-direction-fields: building for $py" pip.log && grep -q "surface-mesh-direction-fields: extension built" pip.log \
+  || fail "pip install -v does not show what the build does"
 listed=$("$py" -m pip list 2> /dev/null)
 grep -q "^surface-mesh-direction-fields " <<< "$listed" || fail "pip list does not show the package"
 "$py" - "$work/venv" << 'PY' || fail "the installed package"

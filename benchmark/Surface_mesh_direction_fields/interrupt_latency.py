@@ -37,7 +37,7 @@ def main():
     parser.add_argument("mesh", nargs="?", default="../shared/data/meshes/nefertiti_sub4.off")
     parser.add_argument("--repeat", type=int, default=2)
     args = parser.parse_args()
-    V, F, _ = smdf.read_mesh(args.mesh)
+    V, F = smdf.read_mesh(args.mesh)
     start = time.perf_counter()
     smdf.compute_globally_optimal_directions(V, F, degree=4)
     whole = time.perf_counter() - start

@@ -12,7 +12,7 @@ import time
 
 import surface_mesh_direction_fields as smdf
 
-V, F, _ = smdf.read_mesh(sys.argv[1])
+V, F = smdf.read_mesh(sys.argv[1])
 reps = int(sys.argv[2]) if len(sys.argv) > 2 else 5
 walls, totals = [], []
 for _ in range(reps):

@@ -482,6 +482,10 @@ for where in vertices faces; do
   check "--quiet: nothing on stdout or stderr (--on $where)" \
         test -z "$("$bin" "$out/octahedron.off" --on "$where" --quiet 2>&1)"
 done
+vtk_warning=$("$bin" "$out/octahedron.off" --vtk "$out/field.txt" --quiet 2>&1)
+check "--vtk x.txt: legacy VTK, and a warning that says so" \
+      eval '[ "$(head -c 14 "$out/field.txt")" = "# vtk DataFile" ] && grep -q "legacy format" <<< "$vtk_warning"'
+check "--vtk x.vtk: no warning" test -z "$("$bin" "$out/octahedron.off" --vtk "$out/field.vtk" --quiet 2>&1)"
 check "--quiet with --json: the JSON line alone" \
       test "$("$bin" "$out/octahedron.off" --quiet --json 2>&1 | grep -c '^{')" = 1
 check "--version: the package's version" \

@@ -9,7 +9,7 @@ type stubs, ``__init__.pyi`` with ``py.typed``, describe them for mypy and
 editors).
 """
 import inspect
-from typing import Any, Callable, Optional, Tuple
+from typing import Any, Callable, Dict, Optional, Tuple
 
 from . import _core
 from ._core import *  # noqa: F401,F403
@@ -79,6 +79,52 @@ def compute_point_set_directions(P: Any, /, **options: Any) -> "PointSetField":
     return _core.compute_point_set_directions(P, **options)
 
 
+class MeshArrays(tuple):
+    """A repaired triangle mesh as the pair (V, F), so that ``V, F = read_mesh(path)`` unpacks it:
+    V float64 of shape (|V|, 3), F int64 of shape (|F|, 3), an oriented manifold that the field functions
+    take as it is. ``repairs`` is a dict of what the repair changed (counts: merged_points,
+    degenerate_faces_removed, polygons_triangulated, repeated_faces_removed, faces_reoriented,
+    vertices_duplicated, faces_skipped, unused_vertices_removed); ``maps`` (None unless asked for with
+    with_maps=True) a dict of int64 arrays between the input and the mesh: 'vertex_of_file_vertex' (-1: a
+    point no face uses; merged points share a vertex), 'file_vertex_of_vertex' and 'file_face_of_face' (the
+    input polygon each triangle comes from)."""
+
+    def __new__(cls, V: Any, F: Any, repairs: Dict[str, int], maps: Optional[Dict[str, Any]] = None) -> "MeshArrays":
+        made = super().__new__(cls, (V, F))
+        made.repairs = repairs
+        made.maps = maps
+        return made
+
+    @property
+    def V(self) -> Any:
+        """float64 (|V|, 3): the vertex positions"""
+        return self[0]
+
+    @property
+    def F(self) -> Any:
+        """int64 (|F|, 3): the triangles, rows of indices into V"""
+        return self[1]
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        return (MeshArrays, (self[0], self[1], self.repairs, self.maps))
+
+
+def read_mesh(path: Any, *, with_maps: bool = False) -> MeshArrays:
+    """Reads an OFF, OBJ, PLY or STL file with the command-line program's readers and repair (the same mesh,
+    hence the same field): ``V, F = read_mesh(path)``; the result's ``repairs`` (and ``maps`` with
+    with_maps=True) say what the repair changed. A file that cannot be opened raises the OSError open()
+    raises; one that holds no usable mesh, a one-line ValueError."""
+    return MeshArrays(*_core._read_mesh(path, with_maps=with_maps))
+
+
+def repair_mesh(V: Any, F: Any, /, *, with_maps: bool = False) -> MeshArrays:
+    """Repairs arrays in memory as read_mesh() repairs a file's: V (|V|, 3) numbers, F an integer array of
+    shape (|F|, k) with k >= 3, or a list of polygons of any sizes. Merges repeated points, drops degenerate
+    and repeated faces, triangulates polygons, orients the faces consistently and splits non-manifold
+    vertices: ``V, F = repair_mesh(V, F)``; ``repairs`` and ``maps`` as for read_mesh()."""
+    return MeshArrays(*_core._repair_mesh(V, F, with_maps=with_maps))
+
+
 compute_point_set_directions.__doc__ = _core.compute_point_set_directions.__doc__
 compute_point_set_directions.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
     [inspect.Parameter("P", inspect.Parameter.POSITIONAL_ONLY)] +
@@ -93,4 +139,4 @@ DirectionField.compute.__doc__ = _core._compute_doc
 DirectionField.compute.__signature__ = _signature("self")  # type: ignore[attr-defined]
 __doc__ = _core.__doc__
 # the names used above are not the package's: dir() lists only its own
-del Any, Callable, Optional, Tuple, inspect
+del Any, Callable, Dict, Optional, Tuple, inspect

@@ -17,7 +17,6 @@ from shapes import octahedron, sphere, torus
 # The program lets the factorization set OpenBLAS's threads; with the same
 # setting the module gives the same digits (the module's default is off).
 THREAD_CONTROL_BY_DEFAULT = smdf.openblas_thread_control()
-smdf.set_openblas_thread_control(True)
 
 
 def test_version_and_docs():
@@ -52,7 +51,8 @@ def run_program(program, mesh, out, *options):
 ])
 def test_same_field_as_the_program(program, shared, tmp_path, options, python):
     mesh = os.path.join(shared, "fandisk.off")
-    V, F, repairs = smdf.read_mesh(mesh)
+    V, F = loaded = smdf.read_mesh(mesh)
+    repairs = loaded.repairs
     assert sum(repairs.values()) == 0
     directions, singular, report = run_program(program, mesh, str(tmp_path), *options)
     r = smdf.compute_globally_optimal_directions(V, F, **python)
@@ -70,7 +70,8 @@ def test_same_field_as_the_program(program, shared, tmp_path, options, python):
 ])
 def test_more_options_same_field_as_the_program(program, shared, tmp_path, name, options, python):
     mesh = os.path.join(shared, name)
-    V, F, repairs = smdf.read_mesh(mesh)
+    V, F = loaded = smdf.read_mesh(mesh)
+    repairs = loaded.repairs
     if sum(repairs.values()) != 0:
         pytest.skip("the file needs repairs: its vertex order differs from the mesh's")
     if "GUIDANCE" in options:  # a stroke field: x on the upper half, nothing below
@@ -88,9 +89,12 @@ def test_more_options_same_field_as_the_program(program, shared, tmp_path, name,
     assert np.array_equal(r.directions, directions) and np.array_equal(r.singular_faces, singular)
 
 
-def test_openblas_thread_control_is_opt_in(shared):
-    assert THREAD_CONTROL_BY_DEFAULT is False
-    V, F, _ = smdf.read_mesh(os.path.join(shared, "fandisk.off"))
+def test_openblas_thread_control_is_on_as_in_the_program(shared):
+    smdf.set_openblas_thread_control(True)
+    if not smdf.openblas_thread_control():
+        pytest.skip("OpenBLAS is not linked with its thread control")
+    assert THREAD_CONTROL_BY_DEFAULT is True  # the program's setting: the same digits without a switch
+    V, F = smdf.read_mesh(os.path.join(shared, "fandisk.off"))
     controlled = smdf.compute_globally_optimal_directions(V, F, degree=4)
     smdf.set_openblas_thread_control(False)
     try:
@@ -171,7 +175,7 @@ def test_face_field_program_and_module_agree(shared, program, tmp_path):
     path = os.path.join(shared, "fertility.off")
     subprocess.run([direction_field, path, "--on", "faces", "--sing", str(tmp_path / "f.sing"), "--mesh-out",
                     str(tmp_path / "f.off"), "--quiet"], check=True, capture_output=True)
-    V, F, _ = smdf.read_mesh(str(tmp_path / "f.off"))
+    V, F = smdf.read_mesh(str(tmp_path / "f.off"))
     r = smdf.compute_face_directions(V, F, degree=4)
     listed = np.loadtxt(tmp_path / "f.sing", skiprows=1, dtype=np.int64)
     assert np.array_equal(np.sort(listed, axis=0), np.sort(r.singular_vertices, axis=0))
@@ -332,7 +336,7 @@ def test_ctrl_c_interrupts_a_long_computation(shared):
     path = os.path.join(shared, "nefertiti_sub4.off")
     if not os.path.exists(path):
         pytest.skip(MISSING_INPUT + "nefertiti_sub4.off")
-    V, F, _ = smdf.read_mesh(path)
+    V, F = smdf.read_mesh(path)
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     seen = []
     timer.start()
@@ -353,7 +357,7 @@ def test_a_factorization_asks_the_progress_callable_and_stops(shared):
     path = os.path.join(shared, "nefertiti_sub4.off")
     if not os.path.exists(path):
         pytest.skip(MISSING_INPUT + "nefertiti_sub4.off")
-    V, F, _ = smdf.read_mesh(path)
+    V, F = smdf.read_mesh(path)
     seen = []
     smdf.compute_globally_optimal_directions(V, F, degree=4, progress=seen.append)
     assert seen.count(0.2) > 4  # asked again and again during the factorization (0.2: before it)
@@ -393,7 +397,8 @@ def test_read_mesh_maps_between_file_and_mesh(tmp_path):
     off = tmp_path / "m.off"
     off.write_text("OFF\n7 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n9 9 9\n0.5 0.5 1\n1 0 0\n"
                    "4 3 2 1 0\n3 0 1 5\n3 6 2 5\n3 2 3 5\n3 3 0 5\n")
-    V, F, repairs, maps = smdf.read_mesh(off, with_maps=True)
+    loaded = smdf.read_mesh(off, with_maps=True)
+    (V, F), repairs, maps = loaded, loaded.repairs, loaded.maps
     assert repairs["merged_points"] == 1 and repairs["polygons_triangulated"] == 1
     file_points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [9, 9, 9], [0.5, 0.5, 1], [1, 0, 0]])
     of_file = maps["vertex_of_file_vertex"]
@@ -403,7 +408,7 @@ def test_read_mesh_maps_between_file_and_mesh(tmp_path):
     assert np.array_equal(file_points[maps["file_vertex_of_vertex"]], V)
     assert len(maps["file_face_of_face"]) == len(F) == 6 and sorted(set(maps["file_face_of_face"])) == [0, 1, 2, 3, 4]
     assert list(maps["file_face_of_face"]).count(0) == 2  # the quad's two triangles
-    assert len(smdf.read_mesh(off)) == 3
+    assert len(smdf.read_mesh(off)) == 2 and smdf.read_mesh(off).maps is None
 
 
 def test_a_mesh_that_is_not_an_oriented_manifold_is_named():
@@ -442,7 +447,7 @@ def test_prescribed_singularities():
 
 @pytest.mark.parametrize("name,degree", [("fertility.off", 4), ("eight.off", 100)])
 def test_a_field_given_back_with_its_loop_turns(shared, name, degree):
-    V, F, _ = smdf.read_mesh(os.path.join(shared, name))
+    V, F = smdf.read_mesh(os.path.join(shared, name))
     field = smdf.DirectionField(V, F)
     first = field.compute(degree=degree)
     assert first.loop_turns.shape[1] == 2 and len(first.loop_turns) > 0
@@ -482,7 +487,7 @@ def test_two_threads_give_the_same_results():
 CONCURRENT = """
 import sys, threading, numpy as np
 import surface_mesh_direction_fields as smdf
-meshes = [smdf.read_mesh(path)[:2] for path in sys.argv[1:]]
+meshes = [smdf.read_mesh(path) for path in sys.argv[1:]]
 alone = [smdf.compute_globally_optimal_directions(V, F, degree=4, align="curvature").directions for V, F in meshes]
 for trial in range(2):
     out = [None] * len(meshes)
@@ -515,7 +520,7 @@ def test_two_threads_with_blas_threads_give_the_same_digits(shared):
 PRESCRIBED_CONCURRENT = """
 import sys, threading, numpy as np
 import surface_mesh_direction_fields as smdf
-meshes = [smdf.read_mesh(path)[:2] for path in sys.argv[1:]]
+meshes = [smdf.read_mesh(path) for path in sys.argv[1:]]
 edits = [smdf.compute_globally_optimal_directions(V, F, degree=4).singular_faces for V, F in meshes]
 def prescribed(i):
     return smdf.compute_globally_optimal_directions(*meshes[i], degree=4, prescribed=edits[i]).directions
@@ -598,7 +603,8 @@ def test_read_mesh_repairs_and_refuses(tmp_path):
     quads = tmp_path / "cube.off"
     quads.write_text("OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
                      "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
-    V, F, repairs = smdf.read_mesh(str(quads))
+    V, F = loaded = smdf.read_mesh(str(quads))
+    repairs = loaded.repairs
     assert V.shape == (8, 3) and F.shape == (12, 3) and repairs["polygons_triangulated"] == 6
     assert smdf.compute_globally_optimal_directions(V, F).index_sum == 8
     for text in ["", "OFF\n3 1 0\n0 0 0\n1 0 0\n"]:
@@ -610,6 +616,57 @@ def test_read_mesh_repairs_and_refuses(tmp_path):
         smdf.read_mesh(str(tmp_path / "missing.off"))
     with pytest.raises(IsADirectoryError):
         smdf.read_mesh(str(tmp_path))
+
+
+def test_repair_mesh_in_memory_is_read_mesh_of_the_file(tmp_path):
+    # a cube of quads with a flipped quad, a repeated point and a point no face uses: the arrays
+    # repaired in memory are the file's repaired mesh, bit for bit, with the same maps
+    V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1],
+                  [7, 7, 7], [1, 0, 0]], dtype=float)
+    F = np.array([[0, 3, 2, 1], [7, 6, 5, 4], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]])
+    F[3] = [9, 2, 6, 5]  # vertex 1 by its repeated point
+    path = tmp_path / "cube.off"
+    path.write_text("OFF\n10 6 0\n" + "".join("%r %r %r\n" % tuple(p) for p in V) +
+                    "".join("4 %d %d %d %d\n" % tuple(f) for f in F))
+    from_file = smdf.read_mesh(path, with_maps=True)
+    repaired = smdf.repair_mesh(V, F, with_maps=True)
+    assert isinstance(repaired, tuple) and len(repaired) == 2
+    assert np.array_equal(repaired.V, from_file.V) and np.array_equal(repaired.F, from_file.F)
+    assert repaired.repairs == from_file.repairs
+    assert repaired.repairs["merged_points"] == 1 and repaired.repairs["faces_reoriented"] == 2
+    assert repaired.repairs["polygons_triangulated"] == 6 and repaired.repairs["unused_vertices_removed"] == 2
+    for key in from_file.maps:
+        assert np.array_equal(repaired.maps[key], from_file.maps[key])
+    assert smdf.compute_globally_optimal_directions(*repaired).index_sum == 8
+    # polygons of several sizes as a list; pickling keeps what the repair said
+    listed = smdf.repair_mesh(V[:8], [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5], [0, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6],
+                                      [3, 0, 4, 7]])
+    assert listed.F.shape == (12, 3) and listed.repairs["polygons_triangulated"] == 5
+    again = pickle.loads(pickle.dumps(listed))
+    assert np.array_equal(again.F, listed.F) and again.repairs == listed.repairs and again.maps is None
+
+
+def test_repair_mesh_keeps_a_clean_mesh(shared):
+    V, F = smdf.read_mesh(os.path.join(shared, "spot.off"))
+    W, G = repaired = smdf.repair_mesh(V, F)
+    assert np.array_equal(V, W) and np.array_equal(F, G) and sum(repaired.repairs.values()) == 0
+
+
+@pytest.mark.parametrize("V,F,error", [
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 3]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 1]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [np.nan, 1, 0]], [[0, 1, 2]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 1]], ValueError),
+    ([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.zeros((0, 3), dtype=int), ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2.5]], ValueError),
+    ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], "abc", TypeError),
+])
+def test_repair_mesh_refuses_in_one_line(V, F, error):
+    with pytest.raises(error) as caught:
+        smdf.repair_mesh(np.array(V, dtype=float), F)
+    assert "\n" not in str(caught.value)
 
 
 def test_random_arrays_never_crash():
@@ -646,7 +703,7 @@ def test_meshio_example(tmp_path):
     ("write_singularity_list", "--singularity-list", "f.txt")])
 def test_writers_write_the_programs_files(program, shared, tmp_path, writer, option, name):
     mesh = os.path.join(shared, "spot.off")
-    V, F, _ = smdf.read_mesh(mesh)
+    V, F = smdf.read_mesh(mesh)
     r = smdf.compute_globally_optimal_directions(V, F, degree=4)
     ours, theirs = tmp_path / ("py_" + name), tmp_path / ("cli_" + name)
     getattr(smdf, writer)(str(ours), V, F, r)
@@ -662,7 +719,7 @@ def test_writers_write_the_programs_files(program, shared, tmp_path, writer, opt
     ("write_sing", "--sing", "f.sing"), ("write_matching", "--matching", "f.matching")])
 def test_face_field_writers_write_the_programs_files(program, shared, tmp_path, writer, option, name):
     mesh = os.path.join(shared, "spot.off")
-    V, F, _ = smdf.read_mesh(mesh)
+    V, F = smdf.read_mesh(mesh)
     field = smdf.compute_face_directions(V, F, degree=4)
     ours, theirs = tmp_path / ("py_" + name), tmp_path / ("cli_" + name)
     assert getattr(smdf, writer)(str(ours), V, F, field) is True
@@ -672,7 +729,7 @@ def test_face_field_writers_write_the_programs_files(program, shared, tmp_path, 
 
 def test_singularity_cancellation_as_the_program(program, shared):
     mesh = os.path.join(shared, "cow.off")
-    V, F, _ = smdf.read_mesh(mesh)
+    V, F = smdf.read_mesh(mesh)
     smooth = smdf.compute_face_directions(V, F)
     fewer = smdf.compute_face_directions(V, F, singularity_cancellation_radius=0.07)
     assert fewer.cancelled_pairs > 0 and fewer.prescribed and fewer.solves == ["parallel section"]

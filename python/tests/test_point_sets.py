@@ -1,8 +1,10 @@
 """Fields on point sets from Python (user manual, "Point Sets"): Poincare-Hopf on
 a sampled sphere, the mesh's field from the mesh's own vertices, the program's
 digits, rigid motions, and the refusals."""
+import copy
 import json
 import math
+import pickle
 import subprocess
 
 import numpy as np
@@ -37,6 +39,25 @@ def test_sphere_index_sum_and_arrays():
             f.directions[0, 0] = 1.0  # read-only
 
 
+def test_pickle_and_copy_keep_everything():
+    f = smdf.compute_point_set_directions(fibonacci_sphere(600), degree=4)
+    for g in (pickle.loads(pickle.dumps(f)), copy.deepcopy(f)):
+        for name in ("directions", "normals", "magnitudes", "triangles", "holders", "on_surface", "singular_triangles"):
+            assert np.array_equal(getattr(g, name), getattr(f, name)) and not getattr(g, name).flags.writeable
+        assert (g.degree, g.index_sum, g.surface_euler_characteristic, g.surface_is_closed, g.normals_estimated,
+                g.points_without_triangles, g.eigenvalues, g.converged) == \
+            (f.degree, f.index_sum, f.surface_euler_characteristic, f.surface_is_closed, f.normals_estimated,
+             f.points_without_triangles, f.eigenvalues, f.converged)
+    state = list(f.__getstate__())
+    state[6] = np.array([[len(f.triangles) + 5, 1]])  # a singular triangle that is not one
+    with pytest.raises(ValueError, match="singular_triangles"):
+        smdf.PointSetField.__new__(smdf.PointSetField).__setstate__(tuple(state))
+    state = list(f.__getstate__())
+    state[4] = state[4][:-1]  # holders: one fewer than the triangles
+    with pytest.raises(ValueError, match="holders"):
+        smdf.PointSetField.__new__(smdf.PointSetField).__setstate__(tuple(state))
+
+
 def test_estimated_normals_and_rigid_motion():
     P = fibonacci_sphere(1200)
     f = smdf.compute_point_set_directions(P)
@@ -69,7 +90,6 @@ def test_same_digits_as_the_program(program, tmp_path):
     np.savetxt(tmp_path / "s.xyz", P, fmt="%.17g")
     subprocess.run([program, str(tmp_path / "s.xyz"), "--directions", str(tmp_path / "d.txt"), "--json-file",
                     str(tmp_path / "s.json"), "--quiet"], check=True, stdout=subprocess.DEVNULL)
-    smdf.set_openblas_thread_control(True)  # as the program does: the same digits (test_module.py)
     f = smdf.compute_point_set_directions(np.loadtxt(tmp_path / "s.xyz"))
     assert np.array_equal(np.loadtxt(tmp_path / "d.txt"), f.directions)
     assert json.load(open(tmp_path / "s.json"))["index_sum"] == f.index_sum

@@ -15,8 +15,8 @@ import re
 import sys
 
 VOCABULARY = {"exceptions.h", "alignment.h", "Direction_field_result.h"}  # include nothing of the package
-# the solvers' public headers: usable on their own, over the linear algebra alone (the engine sees a
-# solver type only; the front end that chooses it includes it)
+# the solvers' public headers: usable on their own, over the linear algebra and the package's own
+# factorization (Supernodal); the engine sees a solver type only, the front end that chooses it includes it
 SOLVER = {"Cholmod_supernodal_solver.h"}
 
 # what each layer may include, besides itself
@@ -26,7 +26,10 @@ MAY_USE = {
     "Linear_algebra": {"vocabulary", "base"},
     "Mesh": {"vocabulary", "base"},
     "Method": {"vocabulary", "base", "Linear_algebra", "Mesh"},
-    "solver": {"vocabulary", "base", "Linear_algebra"},
+    # the supernodal factorization on CHOLMOD's analysis, its solves and Scotch's ordering: the default
+    # solver's code, which only the solver's public header includes
+    "Supernodal": {"vocabulary", "base", "Linear_algebra"},
+    "solver": {"vocabulary", "base", "Linear_algebra", "Supernodal"},
     "Engine": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method"},
     # the processes' path (PETSc, SLEPc, MPI), behind the engine's Distributed_backend (Method)
     "Distributed": {"vocabulary", "base", "Linear_algebra", "Mesh", "Method"},

@@ -5,6 +5,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 
 #include <string>
@@ -14,8 +15,6 @@
 #error "test_default_solvers_eigen.cpp must be built without CGAL_SURFACE_MESH_DIRECTION_FIELDS_USE_CHOLMOD"
 #endif
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 
 const void* free_function_of_eigen_file()

@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -20,15 +21,7 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
-typedef Mesh::Edge_index Edge_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
-namespace params = CGAL::parameters;
 
 namespace {
 

@@ -28,6 +28,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include "test_types.h"
 #include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -44,14 +45,7 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
-namespace params = CGAL::parameters;
 
 typedef std::vector<std::pair<Face_index, int> > Singularities;
 

@@ -22,6 +22,7 @@
 
 #include <Eigen/Dense>
 
+#include "test_types.h"
 #include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -35,15 +36,8 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace I = SMDF::internal;
-namespace params = CGAL::parameters;
 
 static const double degree = CGAL_PI / 180.;
 

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -21,11 +22,6 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace SIO = CGAL::Surface_mesh_direction_fields::IO;
 typedef std::array<double, 3> V3;

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/subnormals.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -55,8 +56,6 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace SI = CGAL::Surface_mesh_direction_fields::internal;
 typedef std::complex<double> Complex;

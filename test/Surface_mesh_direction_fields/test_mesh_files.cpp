@@ -82,6 +82,38 @@ Cgal_soup awkward_soup()
 
 } // namespace
 
+// The picture's views: a sheet (a tilted 10 x 1 x 0.01 strip) is seen from
+// both sides at most 50 degrees from its normal, not at a graze; a rounder
+// shape keeps the tetrahedron's four views.
+void check_picture_views(Test_report& report)
+{
+  using namespace png_snapshot;  // its vector operators
+  const V3 normal = png_snapshot::unit(V3{0.3, -0.2, 1.});
+  const V3 along = png_snapshot::unit(png_snapshot::cross(normal, V3{1., 0., 0.}));
+  const V3 across = png_snapshot::cross(normal, along);
+  std::vector<V3> strip, block;
+  for(int i = 0; i <= 100; ++i)
+    for(int j = 0; j <= 10; ++j)
+      for(int k = 0; k <= 1; ++k)
+      {
+        strip.push_back((0.1 * i) * along + (0.1 * j) * across + (0.01 * k) * normal);
+        block.push_back(V3{0.1 * i, 0.5 * j, 3. * k});
+      }
+  const png_snapshot::View_set sheet = png_snapshot::view_directions(strip);
+  bool facing = true, both_sides[2] = {false, false};
+  for(const V3& d : sheet.directions)
+  {
+    const double c = png_snapshot::dot(d, normal);
+    facing = facing && std::abs(c) >= std::cos(0.88);
+    both_sides[c > 0.] = true;
+  }
+  report.check(facing && both_sides[0] && both_sides[1] && std::abs(png_snapshot::dot(sheet.up, normal)) < 1e-6,
+               "a sheet is seen from both sides, within 50 degrees of its normal");
+  const png_snapshot::View_set round = png_snapshot::view_directions(block);
+  report.check(round.up[1] == 1. && std::abs(png_snapshot::dot(round.directions[0], round.directions[1]) + 1. / 3.) < 1e-12,
+               "a shape that is not a sheet keeps the tetrahedron's views");
+}
+
 int main()
 {
   Test_report report("test_mesh_files");
@@ -149,5 +181,10 @@ int main()
                  png_snapshot::index_label(-1, 4) == "-1/4" && png_snapshot::index_label(4, 4) == "+1" &&
                  png_snapshot::index_label(-3, 6) == "-1/2",
                "legend labels: +1, -1, +1/2, -1/4 (reduced)");
+  bool every_character_drawn = true;  // what draw_legend() writes, but the spaces
+  for(char c : std::string("n = 0123456789 index: +-/ x no singularity"))
+    every_character_drawn = every_character_drawn && (c == ' ' || png_snapshot::glyph_rows(c) != nullptr);
+  report.check(every_character_drawn, "the legend's font has every character the legend writes");
+  check_picture_views(report);
   return report.finish();
 }

@@ -8,6 +8,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -17,8 +18,6 @@
 #include <map>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 // double precision points (OpenMesh's default is float)
 struct Double_traits : public OpenMesh::DefaultTraits
 {

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_point_set_directions.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -23,13 +24,8 @@
 #include <string>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef CGAL::Point_set_3<Point_3, Vector_3> Point_set;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
-namespace params = CGAL::parameters;
 
 namespace {
 

@@ -36,6 +36,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/prescribed_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -47,14 +48,7 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
-namespace params = CGAL::parameters;
 
 typedef std::vector<std::pair<Face_index, int> > Prescription;
 

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cgal_compatibility.h>
 
+#include "test_types.h"
 #include "field_checks.h"
 #include "generated_meshes.h"
 #include "test_support.h"
@@ -36,14 +37,7 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point_3;
-typedef Kernel::Vector_3 Vector_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex_index;
-typedef Mesh::Face_index Face_index;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
-namespace params = CGAL::parameters;
 
 // Exactly the requirements of the concept DirectionFieldTraits_3.
 struct Minimal_traits

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
@@ -22,8 +23,6 @@
 #include <string>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 namespace SI = CGAL::Surface_mesh_direction_fields::internal;
 typedef Eigen::SparseMatrix<double> Real_sparse;

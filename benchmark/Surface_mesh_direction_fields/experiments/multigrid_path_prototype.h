@@ -398,7 +398,7 @@ void lobpcg_iterate(const Complex_sparse_matrix& A, const Complex_sparse_matrix&
     }
     result.converged = result.residual <= options.residual_tolerance;
     if(result.converged || result.iterations >= options.max_iterations) break;
-    if(options.keep_going && !options.keep_going())
+    if(options.keep_going && !options.keep_going(0.))
       throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
     ++result.iterations;
     precondition(space.w);

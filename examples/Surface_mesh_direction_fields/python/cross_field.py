@@ -15,7 +15,8 @@ import surface_mesh_direction_fields as smdf
 
 
 def main(mesh: Path, output: Path, degree: int) -> None:
-    V, F, repairs = smdf.read_mesh(mesh)
+    V, F = mesh_arrays = smdf.read_mesh(mesh)
+    repairs = mesh_arrays.repairs
     result = smdf.compute_globally_optimal_directions(V, F, degree=degree)
     smdf.write_vtk(output, V, F, result)
     indices = result.singular_faces[:, 1]

@@ -599,9 +599,10 @@ inline std::vector<std::pair<std::size_t, std::size_t> > orient(std::vector<P3>&
 } // namespace read_and_repair_internal
 
 // The soup as a mesh, repaired as the steps above say. Throws Mesh_input_error
-// when no usable face is left.
+// when no usable face is left, naming the soup as `source` does (a quoted file
+// name, or the arrays it came from).
 template <typename Mesh>
-Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path)
+Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& source)
 {
   typedef typename Mesh::Vertex_index Vertex_index;
   namespace repair = read_and_repair_internal;
@@ -613,7 +614,7 @@ Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path
   std::vector<std::size_t> polygon_of_triangle;
   repair::triangulate_soup(soup, first_copy, triangles, polygon_of_triangle, out.report);
   repair::remove_repeated_triangles(soup.points.size(), triangles, polygon_of_triangle, out.report);
-  if(triangles.empty()) throw Mesh_input_error("'" + path + "' holds no usable face");
+  if(triangles.empty()) throw Mesh_input_error(source + " holds no usable face");
 
   std::vector<std::pair<std::size_t, std::size_t> > copies;
   std::size_t skipped = 0;
@@ -629,7 +630,7 @@ Repaired_mesh<Mesh> repair_into_mesh(Polygon_soup& soup, const std::string& path
     added = repair::add_triangles(soup.points, triangles, out.mesh, skipped);
   }
   out.report.skipped_triangles = skipped;
-  if(out.mesh.number_of_faces() == 0) throw Mesh_input_error("'" + path + "' holds no usable face");
+  if(out.mesh.number_of_faces() == 0) throw Mesh_input_error(source + " holds no usable face");
   for(std::size_t t : added) out.file_face_of_face.push_back(polygon_of_triangle[t]);
   out.file_vertex_of_vertex.resize(soup.points.size());
   std::iota(out.file_vertex_of_vertex.begin(), out.file_vertex_of_vertex.end(), std::size_t(0));
@@ -648,7 +649,7 @@ Repaired_mesh<Mesh> read_and_repair_mesh(const std::string& path)
 {
   Polygon_soup soup = read_polygon_soup(path);
   if(soup.number_of_polygons() == 0) throw Mesh_input_error("'" + path + "' holds no face");
-  return repair_into_mesh<Mesh>(soup, path);
+  return repair_into_mesh<Mesh>(soup, "'" + path + "'");
 }
 
 #endif

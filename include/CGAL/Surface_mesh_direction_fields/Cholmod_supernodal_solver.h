@@ -14,7 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/cholmod_supernodal_factorization.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Supernodal/cholmod_supernodal_factorization.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 
 #include <CGAL/Eigen_sparse_matrix.h>

@@ -223,7 +223,7 @@ private:
     options.max_iterations = request.max_iterations;
     options.residual_tolerance = request.residual_tolerance;
     options.random_seed = request.random_seed;
-    options.keep_going = progress.keep_going_test();
+    options.keep_going = progress.keep_going_within_step();
     options.transport_in_energy = true;
     Face_component_systems<SparseSolver> systems(m_components, m_length_scale, user_solver);
     Alignment_request alignment = request.alignment;
@@ -234,7 +234,9 @@ private:
     result.timings.setup_ms = milliseconds_since(start);
     for(std::size_t c = 0; c < m_components.list.size(); ++c)
     {
-      progress.reached(0.1 + 0.9 * static_cast<double>(c) / static_cast<double>(m_components.list.size()));
+      const double components = static_cast<double>(m_components.list.size());
+      progress.reached(0.1 + 0.9 * static_cast<double>(c) / components,
+                       0.1 + 0.9 * static_cast<double>(c + 1) / components);
       const Component& comp = m_components.list[c];
       const auto assembly_start = Clock::now();
       systems.set_matrices(c, face_energy_and_mass(m_mesh, m_spaces, m_dual, comp, request.degree,

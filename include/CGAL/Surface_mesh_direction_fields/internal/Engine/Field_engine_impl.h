@@ -105,14 +105,16 @@ private:
 
     // 4. one problem per component: the smallest eigenvector, or the aligned / constrained solve
     Eigen_solve_options options = eigen_solve_options(request);
-    options.keep_going = progress.keep_going_test();
+    options.keep_going = progress.keep_going_within_step();
     Component_fields<Component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_geometry.mesh.number_of_vertices(), Complex(0., 0.));
     answer.magnitudes.assign(u.size(), 0.);
     result.components.resize(m_geometry.components.list.size());
     for(std::size_t c = 0; c < result.components.size(); ++c)
     {
-      progress.reached(0.2 + 0.8 * static_cast<double>(c) / static_cast<double>(result.components.size()));
+      const double components = static_cast<double>(result.components.size());
+      progress.reached(0.2 + 0.8 * static_cast<double>(c) / components,
+                       0.2 + 0.8 * static_cast<double>(c + 1) / components);
       solve_component(c, fields, targets, options, result, u, answer.magnitudes);
     }
     progress.reached(1.);

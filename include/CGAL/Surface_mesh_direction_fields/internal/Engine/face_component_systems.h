@@ -24,6 +24,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 // The linear systems of a field on faces, one component at a time, for
@@ -54,8 +55,9 @@ public:
   // Component c's A and M (the previous component's are freed).
   void set_matrices(std::size_t c, Energy_and_mass em)
   {
-    for(Energy_and_mass& old : m_matrices) old = Energy_and_mass();
+    if(m_filled) m_matrices[*m_filled] = Energy_and_mass();
     m_matrices[c] = std::move(em);
+    m_filled = c;
   }
 
   std::size_t unknowns(std::size_t c) const { return m_components.list[c].faces.size(); }
@@ -99,6 +101,7 @@ private:
   double m_length_scale;
   const SparseSolver* m_user_solver;
   std::vector<Energy_and_mass> m_matrices;
+  std::optional<std::size_t> m_filled;  // the one component whose A and M are held
   std::unique_ptr<Factorization> m_factorization;
 };
 

@@ -52,15 +52,11 @@ namespace internal {
 // The fraction of the coarse bound R used as the shift, for the energy E_s.
 // R overestimates lambda_1 by an error of about the same size for every s,
 // but lambda_1 itself shrinks as |s| -> 1 (on a sphere it is n (1 - s)), so
-// R / lambda_1 grows. Measured after 4 sweeps on the shared meshes with
-// 5000 vertices or more (n = 1, 2, 4, 6): at most 1.26 for s = 0 (1.9 where
-// lambda_1 is about 0, where no shift is tried), 1.46 for |s| = 0.5, 4.3 for
-// |s| = 0.9, 15 for |s| = 1. A fraction above lambda_1 / R makes A - sigma M
-// indefinite, which costs a second factorization; 0.6 (1 - |s|) keeps a
-// margin of 1.3 or more at s = 0 and of 2 or more elsewhere (it allows
-// R / lambda_1 up to 1.67, 3.3 and 16.7 for those s; no shift at |s| = 1).
-// With it the solves on nefertiti_sub4 (400k faces, n = 4, s = 0) fall from
-// 16 to 7.
+// R / lambda_1 grows with |s|. A fraction above lambda_1 / R makes
+// A - sigma M indefinite, which costs a second factorization; 0.6 (1 - |s|)
+// stays below lambda_1 / R with a margin on every mesh measured, and the
+// shift near lambda_1 halves the solves (the benchmark's README, "The coarse
+// bound, the basis and the early moves").
 inline double shift_fraction_for(double s)
 {
   return 0.6 * (std::max)(0., 1. - std::abs(s));
@@ -77,14 +73,15 @@ struct Eigen_solve_options
   double residual_tolerance = 1e-10;
   std::size_t max_iterations = 1000;
   unsigned int random_seed = 0;
-  // asked before each solve; false stops the iteration (Computation_interrupted)
-  std::function<bool()> keep_going;
+  // asked before each solve with the share of the iteration done (estimated
+  // from the residual's fall towards the tolerance); false stops the
+  // iteration (Computation_interrupted)
+  std::function<bool(double)> keep_going;
   // Vectors per block solve; the largest basis kept for Rayleigh-Ritz (its
   // memory is basis_size complex vectors); how many of its best Ritz vectors
   // a restart keeps. Keeping several matters where the lowest eigenvalues
-  // cluster: on sphere_oded (n = 4) over 8 random starts, a basis of 12
-  // keeping 4 needs 42-60 solves, one of 16 keeping 6 37-43, one of 8 keeping
-  // 3 up to 758; on the other shared meshes all need the same solves.
+  // cluster (a sphere): with too few, a restart loses the converging
+  // direction and the solves multiply (the benchmark's README).
   Eigen::Index block_size = 1;
   Eigen::Index basis_size = 12;
   Eigen::Index restart_size = 4;
@@ -121,13 +118,27 @@ struct Eigen_solve_options
   // `early_reshift_gain` times closer to the best Ritz value and the iteration's rate over its last solves leaves
   // `early_reshift_min_solves` solves or more to the tolerance (a factorization costs several solves; with fewer
   // left a new one does not pay). A gain of 0 turns this off. These moves count among the `max_reshifts`.
-  // Off by default. Started from the shift -epsilon, a gain of 4 takes a surface of genus 6,400 from 48 to 27
-  // solves. Started from the coarse bound, as the engine starts, the first targets lie above lambda_1 (the Ritz
-  // value's nearest eigenvalue is not yet lambda_1), and each refusal costs a factorization and a move: on the same
-  // surface at s = 0.5 that took 937 solves instead of about 80 (the benchmark's README).
+  // Off by default: it helps an iteration started from the shift -epsilon on surfaces of high genus, but
+  // started from the coarse bound, as the engine starts, the first targets lie above lambda_1 (the Ritz value's
+  // nearest eigenvalue is not yet lambda_1), and each refusal costs a factorization and a move (the benchmark's
+  // README).
   double early_reshift_gain = 0.;
   double early_reshift_min_solves = 12.;
 };
+
+// The share of an iteration done, for a progress report: the solves made
+// against those made plus those still needed at the last solve's rate of
+// fall of the residual (`residuals`: after each solve, the start's first).
+inline double share_done(const std::vector<double>& residuals, const Eigen_solve_options& options)
+{
+  const std::size_t solves = residuals.size() - 1;
+  if(solves == 0) return 0.;
+  const double rate = std::log(residuals[solves - 1] / residuals[solves]);
+  const double left = std::log(residuals[solves] / options.residual_tolerance);
+  if(!(rate > 0.) || !std::isfinite(rate) || !std::isfinite(left)) return 0.;
+  const double share = static_cast<double>(solves) / (static_cast<double>(solves) + (std::max)(0., left / rate));
+  return (std::min)(0.99, share);
+}
 
 // An eigenvector computed to the relative residual `tolerance` is
 // determined to about that fraction of its largest entries: below this
@@ -231,6 +242,8 @@ Coarse_estimate coarse_estimate(const Complex_sparse_matrix& A, const Complex_sp
       Eigen_solve_options coarse_options = options;
       coarse_options.residual_tolerance = (std::max)(options.residual_tolerance, options.coarse_tolerance);
       coarse_options.same_pattern = false;
+      if(options.keep_going)  // the coarse levels are a start: no share of the iteration done
+        coarse_options.keep_going = [keep_going = options.keep_going](double) { return keep_going(0.); };
       try
       {
         Eigen_solve_result coarse = smallest_eigenpair(coarse_A, coarse_M, coarse_factored, coarse_options);
@@ -399,7 +412,7 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   std::vector<double> best_residual(1, result.residual);  // after each solve
   while(result.iterations < options.max_iterations)
   {
-    if(options.keep_going && !options.keep_going())
+    if(options.keep_going && !options.keep_going(share_done(best_residual, options)))
       throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
     Complex_dense_matrix W = factored.solve(R);
     ++result.iterations;
@@ -625,9 +638,9 @@ Eigen_solve_result smallest_eigenpair(const Complex_sparse_matrix& A, const Comp
 // smallest_eigenpair() for A and M of a single use (the free function's):
 // once the coarse estimate and the ordering have read them, they are freed
 // (left empty) and the factorizations and products read their compact form
-// instead (compact_pencil.h), the same values in about 60% of the memory,
-// where the solver factors only the lower triangle and A and M have one
-// pattern. The result is the same.
+// instead (compact_pencil.h), the same values in less memory, where the
+// solver factors only the lower triangle and A and M have one pattern. The
+// result is the same.
 template <typename SparseSolver>
 Eigen_solve_result smallest_eigenpair_freeing_matrices(Complex_sparse_matrix& A, Complex_sparse_matrix& M,
                                                        Factored_matrix<SparseSolver>& factored,

@@ -53,9 +53,9 @@ struct Energy_and_mass
 
 // The local matrices of all faces, in storage that is constructed in place
 // by the loop computing them: a std::vector would first clear it, in one
-// sequential pass (std::complex zero-initializes), which took a third of
-// this step's time at 400,000 faces. Only the faces given to construct() may
-// be read.
+// sequential pass (std::complex zero-initializes), a large part of this
+// step's time on large meshes. Only the faces given to construct() may be
+// read.
 class Local_matrix_array
 {
   static_assert(std::is_trivially_destructible<Local_matrices>::value, "no destructor is called");

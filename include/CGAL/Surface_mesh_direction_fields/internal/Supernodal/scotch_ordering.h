@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SCOTCH_ORDERING_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SCOTCH_ORDERING_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SCOTCH_ORDERING_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SCOTCH_ORDERING_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -122,9 +122,9 @@ public:
   // coarsened to about 200 vertices by greedy growing and refined by
   // Fiduccia-Mattheyses with 20% imbalance allowed (PaStiX's strategy for
   // Scotch, with larger parts); the parts and separators are left unordered
-  // (`s`), since CAMD orders them after. Parts of 120 rows and Scotch's own
-  // orderings of them gave a factor 0.3% larger and took 20% longer; parts
-  // of 500 rows, a factor 4% larger (the benchmark's README).
+  // (`s`), since CAMD orders them after. Smaller parts ordered by Scotch took
+  // longer for a larger factor, larger parts gave a larger factor (the
+  // benchmark's README).
   static const char* strategy()
   {
     return "c{rat=0.7,cpr=n{sep=/(vert>240)?m{rat=0.8,vert=200,low=h{pass=10},asc=f{bal=0.2}};,ole=s,ose=s},"
@@ -209,4 +209,4 @@ std::vector<int> scotch_camd_ordering(cholmod_sparse&, cholmod_common&, const Ch
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SCOTCH_ORDERING_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SCOTCH_ORDERING_H

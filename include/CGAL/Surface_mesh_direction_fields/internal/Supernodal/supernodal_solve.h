@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_SOLVE_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_SOLVE_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -271,11 +271,10 @@ void scatter_below(const Supernodal_factor_view<Index, Scalar>& L, std::size_t s
 }
 
 // The kernels of the two steps below, on complex numbers stored as pairs of
-// reals (the layout std::complex guarantees), in plain loops: most
-// supernodes are small (at 400,000 faces, 23,000 supernodes, 44% of the
-// entries in ones of 9 to 16 columns), and for them the fixed cost of each
-// call into Eigen's triangular solve and matrix-vector product outweighed the
-// work.
+// reals (the layout std::complex guarantees), in plain loops: on surface
+// meshes most supernodes are small, and for them the fixed cost of each call
+// into Eigen's triangular solve and matrix-vector product outweighed the work
+// (the benchmark's README).
 //
 // t[i] -= b[i] y for i in [0, count).
 template <typename Real>
@@ -584,4 +583,4 @@ Complex_vector supernodal_solve(const Supernodal_factor_view<Index, Scalar>& L, 
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_SOLVE_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_SOLVE_H

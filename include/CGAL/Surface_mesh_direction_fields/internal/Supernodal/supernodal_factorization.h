@@ -9,15 +9,15 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_FACTORIZATION_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_FACTORIZATION_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_FACTORIZATION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_FACTORIZATION_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/interruption.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Supernodal/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/subnormals.h>
 
@@ -330,4 +330,4 @@ std::ptrdiff_t supernodal_factorize(const Supernodal_factor_view<Index, Scalar>&
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_SUPERNODAL_FACTORIZATION_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_SUPERNODAL_FACTORIZATION_H

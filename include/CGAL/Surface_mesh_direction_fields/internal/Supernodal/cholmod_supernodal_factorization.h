@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_CHOLMOD_SUPERNODAL_FACTORIZATION_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_CHOLMOD_SUPERNODAL_FACTORIZATION_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_CHOLMOD_SUPERNODAL_FACTORIZATION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_CHOLMOD_SUPERNODAL_FACTORIZATION_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -18,9 +18,9 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/dense_kernels.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/ordering_lock.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/scotch_ordering.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_factorization.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/supernodal_solve.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Supernodal/scotch_ordering.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Supernodal/supernodal_factorization.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Supernodal/supernodal_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 
 #include <Eigen/Dense>
@@ -411,4 +411,4 @@ private:
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_CHOLMOD_SUPERNODAL_FACTORIZATION_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SUPERNODAL_CHOLMOD_SUPERNODAL_FACTORIZATION_H
