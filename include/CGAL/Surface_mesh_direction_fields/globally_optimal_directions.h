@@ -260,8 +260,9 @@ characteristic (discrete Poincar&eacute;-Hopf theorem), whatever the mesh.
     \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{progress_callback}
-    \cgalParamDescription{called on the calling thread with the fraction done (0 to 1) at each step, before
-                          each solve of the iteration and repeatedly during the default solver's
+    \cgalParamDescription{called on the calling thread with the fraction done (0 to 1, never decreasing) at
+                          each step, before each solve of the iteration (whose share is estimated from the
+                          residual's rate of decrease) and repeatedly during the default solver's
                           factorizations; returning `false` stops the computation with
                           `Computation_interrupted`, the output maps unchanged (a way to honour Ctrl-C)}
     \cgalParamType{a callable `bool(double)`}
