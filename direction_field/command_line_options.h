@@ -99,9 +99,10 @@ inline const Option_help option_help[] = {
   {"Field", "--cancel-singularities D", "with --on faces: fewer singularities, for quad meshes with fewer irregular "
                                         "vertices: pairs of singular vertices of opposite index at most D apart "
                                         "along the edges (D a fraction of the bounding box's diagonal, e.g. 0.1) "
-                                        "are removed, and the field is the parallel one with the others (not with "
-                                        "--feature-angle, --constrain-boundary, --lambda, --alignment-weight, "
-                                        "--prescribe; default 0: none removed)"},
+                                        "are removed: the field is the parallel one with the others, or with "
+                                        "--feature-angle, --constrain-boundary, --lambda or --alignment-weight "
+                                        "the same field turned off the constrained faces (not with --prescribe; "
+                                        "default 0: none removed)"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
                                 "follow the principal curvature directions (even n)"},
   {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
@@ -111,9 +112,10 @@ inline const Option_help option_help[] = {
   {"Alignment", "--constrain-boundary HOW", "tangent or normal: one direction fixed along the boundary"},
   {"Alignment", "--feature-angle DEG", "one direction follows the sharp edges, whose faces meet more than DEG "
                                        "degrees from flat (0 < DEG < 180; even n)"},
-  {"Alignment", "--feature-cleanup N", "with --feature-angle: open chains of sharp edges of at most 2N edges and "
-                                       "branches of at most N are dropped, as QuadWild does (default 4; 0 keeps "
-                                       "every sharp edge)"},
+  {"Alignment", "--feature-cleanup N", "with --feature-angle: each cycle of at most 2N sharp edges loses its "
+                                       "least sharp edge (a web becomes a line), then open chains of at most 2N "
+                                       "edges and branches of at most N are dropped, as QuadWild does (default 4; "
+                                       "0 keeps every sharp edge)"},
   {"Alignment", "--curvature-estimate HOW", "quadric-fit (default) or hopf (the paper's Hopf differential)"},
   {"Alignment", "--eigenvalue-bound", "also compute lambda_1 for aligned fields (the JSON's eigenvalue_bound)"},
   {"Outputs", "--directions FILE", "one 'x y z' per vertex of MESH, in its order (17 significant digits)"},
@@ -350,10 +352,8 @@ inline void check_field_location_options(const Options& o)
   if(o.s != 0.) throw Usage_error("--on faces has the Dirichlet energy only: --s must be 0");
   if(o.solver != "default") throw Usage_error("--on faces runs on one process: no --solver " + o.solver);
   if(o.eigenvalue_bound) throw Usage_error("--eigenvalue-bound applies to fields on vertices");
-  if(o.cancel_singularities > 0. && (o.feature_angle > 0. || o.constrain_boundary != "none" || o.lambda_given ||
-                                     o.weight_given || !o.prescribe.empty()))
-    throw Usage_error("--cancel-singularities does not apply with --feature-angle, --constrain-boundary, --lambda, "
-                      "--alignment-weight or --prescribe (the field it leads to turns only as a whole)");
+  if(o.cancel_singularities > 0. && !o.prescribe.empty())
+    throw Usage_error("--cancel-singularities does not apply with --prescribe (which places every singularity)");
 }
 
 // The values that are words, and the combinations of options.

@@ -239,7 +239,10 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
        << " (boundary " << c.boundary_index << "/" << r.degree << ", Euler characteristic " << c.euler_characteristic
        << ")\n";
   }
-  if(r.number_of_cancelled_pairs > 0)
+  if(r.number_of_cancelled_pairs > 0 && !r.prescribed)
+    os << "cancelled       " << r.number_of_cancelled_pairs << " pairs of opposite singular vertices within "
+       << o.cancel_singularities << " of the diagonal (the field turned off its constrained faces)\n";
+  else if(r.number_of_cancelled_pairs > 0)
     os << "cancelled       " << r.number_of_cancelled_pairs << " pairs of opposite singular vertices within "
        << o.cancel_singularities << " of the diagonal (parallel field with the others; "
        << r.number_of_non_principal_jumps << " edges with a matching other than the principal one)\n";

@@ -243,8 +243,8 @@ const char* const face_doc =
   "edges where it is not the principal one, which readers that recompute it would read differently).\n"
   "singularity_cancellation_radius > 0 removes the pairs of singular vertices of opposite index at most that far\n"
   "apart along the edges (a fraction of the bounding box's diagonal, e.g. 0.1) and returns the parallel field\n"
-  "with the others: fewer irregular vertices in quad meshes (cancelled_pairs counts them; not with features,\n"
-  "constraints, boundary, lambda_t or alignment_weight).";
+  "with the others or, with features, constraints, boundary, lambda_t or alignment_weight, the same field turned\n"
+  "off the constrained faces: fewer irregular vertices in quad meshes (cancelled_pairs counts them).";
 
 void bind_face_field(py::module_& m)
 {

@@ -91,6 +91,7 @@ def cleaned_up(sharp, border, points, steps=4):
 
     def free(c, v):
         return c.get(v, 0) == 1 and v not in border
+    sharp = thinned(sharp, points, longest, 2 * steps)
     first = count(sharp)
     junction = {v for v, k in first.items() if k > 2 or (v in border and k > 0)}
     kept = set(sharp)
@@ -103,12 +104,44 @@ def cleaned_up(sharp, border, points, steps=4):
     return kept
 
 
+def thinned(sharp, points, longest, length):
+    """--feature-cleanup's thinning: the least sharp edge (largest cosine of the dihedral angle; ties by the
+    vertex pair) of each cycle of at most `length` sharp edges goes, one at a time, unless it is long."""
+    at = {}
+    for key in sharp:
+        for v in key:
+            at.setdefault(v, []).append(key)
+    kept = set(sharp)
+
+    def joined(a, b, skipped):
+        front, seen = [a], {a}
+        for _ in range(length - 1):
+            following = []
+            for v in front:
+                for key in at[v]:
+                    if key == skipped or key not in kept:
+                        continue
+                    u = key[0] if key[1] == v else key[1]
+                    if u == b:
+                        return True
+                    if u not in seen:
+                        seen.add(u)
+                        following.append(u)
+            front = following
+        return False
+    for key in sorted((k for k in sharp if math.dist(points[k[0]], points[k[1]]) <= longest),
+                      key=lambda k: (-sharp[k], k)):
+        if joined(key[0], key[1], key):
+            kept.discard(key)
+    return kept
+
+
 def expected_sharp(points, faces, angle):
     """(face, edge, type) of every side of a boundary edge or of an edge sharper than `angle`, cleaned up."""
     lines = set()
     sides = sides_of_edges(faces)
     border = {v for key, s in sides.items() if len(s) == 1 for v in key}
-    sharp = set()
+    sharp = {}  # edge -> the cosine of its dihedral angle
     for key, s in sides.items():
         if len(s) == 1:
             lines.add((s[0][0], s[0][1], 1))
@@ -116,7 +149,7 @@ def expected_sharp(points, faces, angle):
             (f, c), (g, d) = s
             nf, ng = face_normal(points, faces[f]), face_normal(points, faces[g])
             if dot(nf, ng) < math.cos(math.radians(angle)):
-                sharp.add(key)
+                sharp[key] = dot(nf, ng)
     for key in cleaned_up(sharp, border, points):
         (f, c), (g, d) = sides[key]
         nf, ng = face_normal(points, faces[f]), face_normal(points, faces[g])

@@ -727,7 +727,7 @@ def test_face_field_writers_write_the_programs_files(program, shared, tmp_path, 
     assert ours.read_bytes() == theirs.read_bytes()
 
 
-def test_singularity_cancellation_as_the_program(program, shared):
+def test_singularity_cancellation_as_the_program(program, shared, tmp_path):
     mesh = os.path.join(shared, "cow.off")
     V, F = smdf.read_mesh(mesh)
     smooth = smdf.compute_face_directions(V, F)
@@ -741,8 +741,19 @@ def test_singularity_cancellation_as_the_program(program, shared):
     d = json.loads(out)
     assert d["cancelled_pairs"] == fewer.cancelled_pairs and d["singular_vertices"] == len(fewer.singular_vertices)
     assert pickle.loads(pickle.dumps(fewer)).cancelled_pairs == fewer.cancelled_pairs
-    with pytest.raises(ValueError, match="feature edges"):
-        smdf.compute_face_directions(V, F, singularity_cancellation_radius=0.07, feature_angle=35.0)
+    # with features the field is turned, not replaced: the faces along the features keep their directions
+    aligned = smdf.compute_face_directions(V, F, feature_angle=35.0)
+    turned = smdf.compute_face_directions(V, F, singularity_cancellation_radius=0.1, feature_angle=35.0)
+    assert turned.cancelled_pairs > 0 and not turned.prescribed
+    assert len(turned.singular_vertices) + 2 * turned.cancelled_pairs == len(aligned.singular_vertices)
+    assert turned.index_sum == aligned.index_sum == 8
+    assert set(map(tuple, turned.singular_vertices.tolist())) <= set(map(tuple, aligned.singular_vertices.tolist()))
+    sharp = tmp_path / "cow.sharp"
+    out = subprocess.run([program, mesh, "--on", "faces", "--feature-angle", "35", "--cancel-singularities", "0.1",
+                          "--sharp", str(sharp), "--json"], check=True, capture_output=True, text=True).stdout
+    assert json.loads(out)["cancelled_pairs"] == turned.cancelled_pairs
+    along = np.unique([int(line.split(",")[1]) for line in sharp.read_text().split()[1:]])
+    assert len(along) > 100 and np.abs(turned.face_directions[along] - aligned.face_directions[along]).max() < 1e-12
     with pytest.raises(ValueError, match="non-negative"):
         smdf.compute_face_directions(V, F, singularity_cancellation_radius=-1.0)
 

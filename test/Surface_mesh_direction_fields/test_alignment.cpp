@@ -355,7 +355,8 @@ static double feature_direction_error(const Mesh& mesh, const Directions& d, con
 // The cleanup of detect_feature_edges() on graphs of known shape (steps
 // 4): an open chain of 8 edges goes and one of 9 stays whole, a branch of 4
 // from a loop goes and one of 5 stays, a closed loop stays, a chain that
-// ends on the boundary goes when it has at most 4 edges, and a long edge stays.
+// ends on the boundary goes when it has at most 4 edges, and a long edge stays;
+// small cycles are thinned.
 static void check_feature_cleanup(Test_report& report)
 {
   using SMDF::internal::erode_and_dilate_features;
@@ -403,6 +404,39 @@ static void check_feature_cleanup(Test_report& report)
     report.check(kept_after(g, border, {}) == (length == 4 ? 0 : 5),
                  "a chain of " + std::to_string(length) + " from the boundary " + (length == 4 ? "is dropped" : "stays"));
   }
+  // thinning (cycles of at most 8 edges): a ladder of 5 squares whose rungs bend least keeps its rails
+  // and one rung; a loop of 8 is opened and one of 9 stays; a long edge is never dropped
+  auto thinned = [](Graph& g, const std::vector<double>& bend, std::vector<unsigned char> is_long) {
+    is_long.resize(g.ends.size(), 0);
+    std::vector<unsigned char> marked(g.ends.size(), 1);
+    SMDF::internal::thin_short_cycles(g.ends, g.next, bend, is_long, 8, marked);
+    return marked;
+  };
+  Graph ladder;
+  const std::size_t rail_a = ladder.next++, rail_b = ladder.next++;
+  ladder.path(rail_a, 5);
+  ladder.path(rail_b, 5);
+  std::vector<double> bend(ladder.ends.size(), 0.);
+  for(std::size_t i = 0; i <= 5; ++i) { ladder.ends.push_back({i == 0 ? rail_a : 1 + i, i == 0 ? rail_b : 6 + i}); bend.push_back(0.5); }
+  const std::vector<unsigned char> ladder_kept = thinned(ladder, bend, {});
+  report.check(std::count(ladder_kept.begin(), ladder_kept.end(), 1) == 11 &&
+                 std::count(ladder_kept.begin(), ladder_kept.begin() + 10, 1) == 10,
+               "a ladder of 5 squares is thinned to its two rails and one rung");
+  for(std::size_t length : {8, 9})
+  {
+    Graph loop;
+    const std::size_t first = loop.next++;
+    loop.ends.push_back({loop.path(first, length - 1), first});
+    const std::vector<unsigned char> kept = thinned(loop, std::vector<double>(length, 0.), {});
+    report.check(static_cast<std::size_t>(std::count(kept.begin(), kept.end(), 1)) == (length == 8 ? 7 : 9),
+                 "a loop of " + std::to_string(length) + " edges " + (length == 8 ? "is opened" : "stays whole"));
+  }
+  Graph triangle;
+  const std::size_t corner = triangle.next++;
+  triangle.ends.push_back({triangle.path(corner, 2), corner});
+  const std::vector<unsigned char> triangle_kept = thinned(triangle, {0., 0., 0.9}, {0, 0, 1});
+  report.check(triangle_kept == std::vector<unsigned char>{0, 1, 1},
+               "in a triangle the least sharp edge that is not long is dropped");
   Graph lone;
   lone.path(lone.next++, 1);
   report.check(kept_after(lone, {}, {1}) == 1, "a long edge alone stays");

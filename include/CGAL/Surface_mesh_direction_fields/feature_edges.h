@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -92,6 +93,55 @@ inline void erode_and_dilate_features(const std::vector<std::array<std::size_t, 
   }
 }
 
+// Whether the marked edges join a and b by a path of at most `length`
+// edges that avoids the edge `skipped` (a breadth-first search).
+inline bool joined_within(const std::vector<std::vector<std::size_t> >& edges_at,
+                          const std::vector<std::array<std::size_t, 2> >& ends, const std::vector<unsigned char>& marked,
+                          std::size_t skipped, std::size_t a, std::size_t b, unsigned length)
+{
+  std::vector<std::size_t> front{a}, next, visited{a};
+  for(unsigned step = 0; step < length && !front.empty(); ++step)
+  {
+    next.clear();
+    for(std::size_t v : front)
+      for(std::size_t e : edges_at[v])
+      {
+        if(e == skipped || !marked[e]) continue;
+        const std::size_t u = ends[e][0] == v ? ends[e][1] : ends[e][0];
+        if(u == b) return true;
+        if(std::find(visited.begin(), visited.end(), u) != visited.end()) continue;
+        visited.push_back(u);
+        next.push_back(u);
+      }
+    front.swap(next);
+  }
+  return false;
+}
+
+// Noise makes webs of sharp edges, small cycles side by side, where a
+// person draws one line: the least sharp edge of each cycle of at most
+// `length` edges is dropped (the least sharp first, each cycle checked again
+// after every drop), unless it is long. `bend`: per edge, the cosine of its
+// dihedral angle (the largest the least sharp); ties go by the vertex pair.
+inline void thin_short_cycles(const std::vector<std::array<std::size_t, 2> >& ends, std::size_t vertex_count,
+                              const std::vector<double>& bend, const std::vector<unsigned char>& is_long,
+                              unsigned length, std::vector<unsigned char>& marked)
+{
+  if(length < 3) return;
+  std::vector<std::vector<std::size_t> > edges_at(vertex_count);
+  for(std::size_t e = 0; e < ends.size(); ++e)
+    if(marked[e]) { edges_at[ends[e][0]].push_back(e); edges_at[ends[e][1]].push_back(e); }
+  std::vector<std::size_t> order;
+  for(std::size_t e = 0; e < ends.size(); ++e)
+    if(marked[e] && !is_long[e]) order.push_back(e);
+  auto key = [&](std::size_t e) {  // ties by the vertex pair: the same edges in any edge order
+    return std::make_tuple(-bend[e], (std::min)(ends[e][0], ends[e][1]), (std::max)(ends[e][0], ends[e][1]));
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t e, std::size_t f) { return key(e) < key(f); });
+  for(std::size_t e : order)
+    if(joined_within(edges_at, ends, marked, e, ends[e][0], ends[e][1], length - 1)) marked[e] = 0;
+}
+
 // The length of the bounding box's diagonal of the mesh's points, at any scale.
 template <typename PolygonMesh, typename VertexPointMap>
 double bounding_box_diagonal(const PolygonMesh& mesh, const VertexPointMap& vpm)
@@ -110,12 +160,15 @@ double bounding_box_diagonal(const PolygonMesh& mesh, const VertexPointMap& vpm)
 marks as feature edges the interior edges of `mesh` whose two faces' normals make an angle of more than
 `angle_in_degrees` (the edges that `CGAL::Polygon_mesh_processing::detect_sharp_edges()` marks), cleaned
 up as quad meshers need them, and returns how many it marked. On a scan, noise makes many short chains of
-sharp edges; forced along each of them, a field gathers singularities there. So, as QuadWild does with its
-own features, the chains are eroded from their free ends (a vertex of one feature edge, not on the
-boundary) `feature_cleanup_steps` times and then grown back as many times along the sharp edges: an open
+sharp edges and webs of small cycles; forced along each of them, a field gathers singularities there, and a
+quad mesher makes irregular vertices at every junction. So each cycle of at most twice
+`feature_cleanup_steps` edges loses its least sharp edge (the least sharp first, until no such cycle is
+left), which thins a web to a line; then, as QuadWild does with its own features, the chains are eroded from
+their free ends (a vertex of one feature edge, not on the boundary) `feature_cleanup_steps` times and then
+grown back as many times along the sharp edges: an open
 chain of at most twice that many edges, or a branch of at most that many from a junction, is dropped;
-longer chains, closed loops, chains that end on the boundary and single edges longer than 5% of the
-bounding box's diagonal (the long straight edges of a CAD model) are kept whole (user manual, section
+longer chains, closed loops of more edges, chains that end on the boundary and single edges longer than 5%
+of the bounding box's diagonal (the long straight edges of a CAD model, never dropped) are kept whole (user manual, section
 "Aligned and Constrained Fields").
 
 Unlike `detect_sharp_edges()` it gives the same edges at every scale of the coordinates: the normals are
@@ -138,8 +191,8 @@ value in `edge_is_feature_map`.
       \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
     \cgalParamNEnd
     \cgalParamNBegin{feature_cleanup_steps}
-      \cgalParamDescription{the steps of erosion and growth of the chains of sharp edges (0: every sharp edge
-                            is kept)}
+      \cgalParamDescription{the steps of erosion and growth of the chains of sharp edges, and half the length
+                            of the cycles thinned (0: every sharp edge is kept)}
       \cgalParamType{`unsigned int`}
       \cgalParamDefault{4, as QuadWild}
     \cgalParamNEnd
@@ -164,14 +217,17 @@ std::size_t detect_feature_edges(const PolygonMesh& mesh, double angle_in_degree
   const auto vertex_index = get_initialized_vertex_index_map(mesh);
   std::vector<typename boost::graph_traits<PolygonMesh>::edge_descriptor> sharp;
   std::vector<std::array<std::size_t, 2> > ends;
+  std::vector<double> bends;
   for(auto e : edges(mesh))
   {
     const auto h = halfedge(e, mesh);
     if(is_border_edge(h, mesh)) continue;
     const internal::Vec3 n1 = internal::unit_face_normal(face(h, mesh), mesh, vpm);
     const internal::Vec3 n2 = internal::unit_face_normal(face(opposite(h, mesh), mesh), mesh, vpm);
-    if(!(internal::dot(n1, n2) < cos_angle)) continue;
+    const double bend = internal::dot(n1, n2);
+    if(!(bend < cos_angle)) continue;
     sharp.push_back(e);
+    bends.push_back(std::isfinite(bend) ? bend : -1.);
     ends.push_back({static_cast<std::size_t>(get(vertex_index, source(h, mesh))),
                     static_cast<std::size_t>(get(vertex_index, target(h, mesh)))});
   }
@@ -188,6 +244,7 @@ std::size_t detect_feature_edges(const PolygonMesh& mesh, double angle_in_degree
     const internal::Vec3 side = internal::as_vec3(get(vpm, target(h, mesh))) - internal::as_vec3(get(vpm, source(h, mesh)));
     is_long[i] = internal::norm(side) > longest_eroded;
   }
+  internal::thin_short_cycles(ends, vertex_count, bends, is_long, 2 * steps, kept);
   internal::erode_and_dilate_features(ends, border_vertex, is_long, steps, kept);
   std::size_t marked = 0;
   for(std::size_t i = 0; i < sharp.size(); ++i)

@@ -128,11 +128,13 @@ interior vertices that satisfy Poincare-Hopf are shown exactly.
     \cgalParamDescription{fewer singularities: once the smoothest (or aligned) field is computed, each pair of
                           singular vertices with opposite indices (`k` and `-k`) at most this far apart along the
                           edges is removed, the closest pairs first, and the field returned is the one of
-                          `prescribed_singularities` with the singularities that remain (user manual, section
-                          \ref SMDF_faces). Quad meshes built on it have fewer irregular vertices. The distance is
-                          a fraction of the length of the diagonal of the mesh's bounding box; 0 removes nothing.
-                          It excludes `prescribed_singularities`, `edge_is_feature_map`, `face_is_constrained_map`,
-                          `boundary_alignment`, `alignment_lambda` and `alignment_weight`}
+                          `prescribed_singularities` with the singularities that remain or, with
+                          `edge_is_feature_map`, `face_is_constrained_map`, `boundary_alignment`,
+                          `alignment_lambda` or `alignment_weight`, the same field turned off the constrained
+                          faces, which keep their directions (user manual, section \ref SMDF_faces). A pair whose
+                          removal would show other singularities is kept. Quad meshes built on it have fewer
+                          irregular vertices. The distance is a fraction of the length of the diagonal of the
+                          mesh's bounding box; 0 removes nothing. It excludes `prescribed_singularities`}
     \cgalParamType{`double`}
     \cgalParamDefault{`0`}
   \cgalParamNEnd

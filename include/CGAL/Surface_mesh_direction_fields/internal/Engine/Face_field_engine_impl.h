@@ -149,6 +149,7 @@ public:
     if(request.prescribed) return compute_prescribed(request, answer);
     const Face_direction_field_result optimal = compute_optimal(request, user_solver, answer);
     if(request.cancellation_radius == 0.) return optimal;
+    if(follows_constraints(request)) return with_pairs_turned_away(request, optimal, answer);
     return with_cancelled_pairs(request, optimal, answer);
   }
 
@@ -203,6 +204,87 @@ private:
     result.timings.factorization_ms += optimal.timings.factorization_ms;
     result.timings.solve_ms += optimal.timings.solve_ms;
     result.timings.total_ms += optimal.timings.total_ms;
+    return result;
+  }
+
+  static bool follows_constraints(const Face_field_request& r)
+  {
+    return !r.feature_edges.empty() || std::find(r.constrained.begin(), r.constrained.end(), 1) != r.constrained.end() ||
+           r.boundary != Boundary_alignment::NONE || r.alignment.lambda_given || r.alignment.weight_given;
+  }
+
+  // The singular pairs within the request's radius of a field that follows
+  // constraints or its guidance (which no parallel field does) cancelled by
+  // turning the field itself, the constrained faces kept (user manual,
+  // section "Fields on Faces"; Turning_along_cuts). Where the turned field
+  // shows other singularities than asked, read as any reader reads them,
+  // the cancelled pair nearest each such vertex is given back and the field
+  // turned again (a solve on the kept factor).
+  Face_direction_field_result with_pairs_turned_away(const Face_field_request& request,
+                                                     const Face_direction_field_result& optimal,
+                                                     Face_field_answer& answer) const
+  {
+    const auto start = Clock::now();
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    std::vector<unsigned char> fixed(m_mesh.number_of_faces(), 0);
+    for(std::size_t f = 0; f < fixed.size(); ++f) fixed[f] = constraints[f] != Complex(0., 0.);
+    const std::vector<int>& own = answer.vertex_index;
+    std::vector<Cut_pair> pairs =
+      pairs_to_cut(m_mesh, fixed, request.cancellation_radius * bounding_box_diagonal(m_mesh), own);
+    if(pairs.empty()) return optimal;
+    const Turning_along_cuts turning(m_mesh, m_dual.weight, fixed);
+    std::vector<double> theta(m_mesh.number_of_faces());
+    for(std::size_t f = 0; f < theta.size(); ++f)
+      theta[f] = static_cast<double>(request.degree) * angle_in_face(m_mesh, f, answer.directions[f]);
+    Face_direction_field_result result;
+    Face_field_answer turned;
+    while(!pairs.empty())
+    {
+      result = without_singularities(optimal);
+      write_answer(as_unit_powers(turning.turned(theta, cut_of(m_mesh, pairs))), request.degree, result, turned);
+      std::vector<int> asked = own;
+      for(const Cut_pair& pair : pairs) asked[pair.positive] = asked[pair.negative] = 0;
+      if(turned.vertex_index == asked) break;
+      give_back_pairs_near(asked, turned.vertex_index, pairs);
+    }
+    if(pairs.empty()) return optimal;
+    answer = std::move(turned);
+    result.number_of_cancelled_pairs = pairs.size();
+    const double turning_ms = milliseconds_since(start);
+    result.timings.solve_ms += turning_ms;
+    result.timings.total_ms += turning_ms;
+    return result;
+  }
+
+  // the pair nearest each vertex whose index is not the one asked, given back
+  void give_back_pairs_near(const std::vector<int>& asked, const std::vector<int>& shown,
+                            std::vector<Cut_pair>& pairs) const
+  {
+    std::vector<std::pair<std::size_t, std::size_t> > ends;
+    for(const Cut_pair& pair : pairs) ends.emplace_back(pair.positive, pair.negative);
+    std::vector<unsigned char> given_back(pairs.size(), 0);
+    for(std::size_t v = 0; v < asked.size(); ++v)
+      if(asked[v] != shown[v]) given_back[closest_pair(m_mesh, ends, v)] = 1;
+    std::vector<Cut_pair> kept;
+    for(std::size_t i = 0; i < pairs.size(); ++i)
+      if(!given_back[i]) kept.push_back(std::move(pairs[i]));
+    pairs.swap(kept);
+  }
+
+  static std::vector<Complex> as_unit_powers(const std::vector<double>& theta)
+  {
+    std::vector<Complex> u(theta.size());
+    for(std::size_t f = 0; f < u.size(); ++f) u[f] = std::polar(1., theta[f]);
+    return u;
+  }
+
+  // a result's report without its singular vertices, for write_answer() to count again
+  static Face_direction_field_result without_singularities(Face_direction_field_result result)
+  {
+    result.index_sum = 0;
+    result.number_of_singular_vertices = 0;
+    for(Face_field_component_report& report : result.components)
+      report.index_sum = 0, report.number_of_singular_vertices = 0;
     return result;
   }
 

@@ -315,8 +315,8 @@ void read_face_constraints(const NamedParameters& np, const std::vector<FaceDesc
   }
 }
 
-// singularity_cancellation_radius: a length that the parallel field it leads
-// to can honour (it turns as a whole, so it follows no feature or constraint).
+// singularity_cancellation_radius: a non-negative length, not with a
+// prescription.
 inline void check_cancellation_request(const Face_field_request& r)
 {
   if(r.cancellation_radius == 0.) return;
@@ -326,13 +326,6 @@ inline void check_cancellation_request(const Face_field_request& r)
   if(r.prescribed)
     throw Invalid_input_error("singularity_cancellation_radius and prescribed_singularities exclude each other "
                               "(the prescription places every singularity)");
-  const bool constrained = std::find(r.constrained.begin(), r.constrained.end(), 1) != r.constrained.end();
-  if(!r.feature_edges.empty() || constrained || r.boundary != Boundary_alignment::NONE)
-    throw Invalid_input_error("singularity_cancellation_radius does not apply with feature edges, constrained faces "
-                              "or boundary alignment: the field it leads to turns only as a whole");
-  if(r.alignment.lambda_given || r.alignment.weight_given)
-    throw Invalid_input_error("singularity_cancellation_radius does not apply with alignment_lambda or "
-                              "alignment_weight: the field it leads to turns only as a whole towards the guidance");
 }
 
 // The named parameters of a field on faces read into a Face_field_request.

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/coarse_hierarchy.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/hermitian_products.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/interruption.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/ritz_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
@@ -125,20 +126,6 @@ struct Eigen_solve_options
   double early_reshift_gain = 0.;
   double early_reshift_min_solves = 12.;
 };
-
-// The share of an iteration done, for a progress report: the solves made
-// against those made plus those still needed at the last solve's rate of
-// fall of the residual (`residuals`: after each solve, the start's first).
-inline double share_done(const std::vector<double>& residuals, const Eigen_solve_options& options)
-{
-  const std::size_t solves = residuals.size() - 1;
-  if(solves == 0) return 0.;
-  const double rate = std::log(residuals[solves - 1] / residuals[solves]);
-  const double left = std::log(residuals[solves] / options.residual_tolerance);
-  if(!(rate > 0.) || !std::isfinite(rate) || !std::isfinite(left)) return 0.;
-  const double share = static_cast<double>(solves) / (static_cast<double>(solves) + (std::max)(0., left / rate));
-  return (std::min)(0.99, share);
-}
 
 // An eigenvector computed to the relative residual `tolerance` is
 // determined to about that fraction of its largest entries: below this
@@ -412,7 +399,7 @@ void iterate_with_rayleigh_ritz(const Hermitian_pencil& pencil, const Factored_m
   std::vector<double> best_residual(1, result.residual);  // after each solve
   while(result.iterations < options.max_iterations)
   {
-    if(options.keep_going && !options.keep_going(share_done(best_residual, options)))
+    if(options.keep_going && !options.keep_going(share_done(best_residual, options.residual_tolerance)))
       throw Computation_interrupted("the computation was interrupted (progress_callback returned false)");
     Complex_dense_matrix W = factored.solve(R);
     ++result.iterations;

@@ -15,7 +15,9 @@
 // other point where a progress callback is asked, polls it
 // (Interruption_poll) between supernodes on that thread only, at most once
 // every few milliseconds, so that an interrupt (Ctrl-C in Python) is seen
-// within a fraction of a second without a cost on the factorization.
+// within a fraction of a second without a cost on the factorization. The
+// share of an iteration done (share_done()) is what a progress callback is
+// told inside the eigen-solve.
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_INTERRUPTION_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_LINEAR_ALGEBRA_INTERRUPTION_H
 
@@ -23,10 +25,13 @@
 
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <thread>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -84,6 +89,21 @@ public:
     if(m_stopped.load()) throw Computation_interrupted("the computation was interrupted during a factorization");
   }
 };
+
+// The share of an iteration done, for a progress report: the solves made
+// against those made plus those still needed at the last solve's rate of
+// fall of the residual (`residuals`: after each solve, the start's first)
+// toward `tolerance`.
+inline double share_done(const std::vector<double>& residuals, double tolerance)
+{
+  const std::size_t solves = residuals.size() - 1;
+  if(solves == 0) return 0.;
+  const double rate = std::log(residuals[solves - 1] / residuals[solves]);
+  const double left = std::log(residuals[solves] / tolerance);
+  if(!(rate > 0.) || !std::isfinite(rate) || !std::isfinite(left)) return 0.;
+  const double share = static_cast<double>(solves) / (static_cast<double>(solves) + (std::max)(0., left / rate));
+  return (std::min)(0.99, share);
+}
 
 } // namespace internal
 } // namespace Surface_mesh_direction_fields
