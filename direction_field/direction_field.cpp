@@ -78,6 +78,7 @@ struct Computed_field
   std::vector<Vector_3> directions;
   std::vector<double> magnitudes;
   std::vector<std::pair<Face_index, int> > singular_faces;
+  std::vector<std::array<std::size_t, 2> > features;  // of --feature-angle, for the picture
   SMDF::Direction_field_result result;
 };
 
@@ -367,6 +368,8 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
   else if(o.lambda_given) given.alignment_lambda = o.lambda;
   if(!o.guidance.empty()) given.guidance = CGAL::make_property_map(guidance);
   if(o.feature_angle > 0.) given.features = is_feature;
+  for(auto e : input.mesh.edges())
+    if(feature_storage[e]) field.features.push_back({input.mesh.source(input.mesh.halfedge(e)), input.mesh.target(input.mesh.halfedge(e))});
   if(!o.prescribe.empty())
   {
     given.prescribed = &prescription.faces;
@@ -447,6 +450,7 @@ void write_picture(const Options& o, const Mesh& mesh, const Computed_field& fie
   for(const SMDF::Streamline& l : streamlines) scene.polylines.push_back(l.points);
   scene.face_index.assign(mesh.number_of_faces(), 0);
   for(const auto& fk : field.singular_faces) scene.face_index[static_cast<std::size_t>(fk.first)] = fk.second;
+  scene.feature_edges = field.features;
   png_snapshot::render(scene, outputs.stream(o.png));
 }
 

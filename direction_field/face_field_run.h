@@ -174,6 +174,7 @@ inline void write_picture(const Options& o, const Face_field& field, const std::
   scene.vertex_index.assign(field.data.points.size(), 0);
   for(const auto& vk : field.data.vertex_singularities) scene.vertex_index[vk.first] = vk.second;
   for(const SMDF::Streamline& l : lines) scene.polylines.push_back(l.points);
+  scene.feature_edges = field.features;
   png_snapshot::render(scene, outputs.stream(o.png));
 }
 

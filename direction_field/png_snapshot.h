@@ -49,6 +49,7 @@ struct Scene
   std::vector<int> face_index;      // integer index k per face (0: regular)
   std::vector<int> vertex_index;    // integer index k per vertex, for a field on faces (0: regular)
   std::vector<std::vector<V3> > polylines;  // streamlines; when given, drawn instead of the glyphs
+  std::vector<std::array<std::size_t, 2> > feature_edges;  // the field follows them: drawn over it
   int degree = 1;
 };
 
@@ -224,7 +225,7 @@ inline const unsigned char* glyph_rows(char c)
     {'g', {0x00, 0x00, 0x0F, 0x11, 0x0F, 0x01, 0x0E}}, {'u', {0x00, 0x00, 0x11, 0x11, 0x11, 0x13, 0x0D}},
     {'l', {0x0C, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E}}, {'a', {0x00, 0x00, 0x0E, 0x01, 0x0F, 0x11, 0x0F}},
     {'r', {0x00, 0x00, 0x16, 0x19, 0x10, 0x10, 0x10}}, {'t', {0x08, 0x08, 0x1C, 0x08, 0x08, 0x09, 0x06}},
-    {'y', {0x00, 0x00, 0x11, 0x11, 0x0F, 0x01, 0x0E}}};
+    {'y', {0x00, 0x00, 0x11, 0x11, 0x0F, 0x01, 0x0E}}, {'f', {0x06, 0x09, 0x08, 0x1C, 0x08, 0x08, 0x08}}};
   for(const auto& g : font)
     if(g.c == c) return g.rows;
   return nullptr;  // a space
@@ -394,7 +395,9 @@ inline void draw_singularity(const V3& c, int k, const View& view, Canvas& canva
   canvas.disc(c, 5., index_colour(k));
 }
 
-// One panel: the surface, the field (lines or glyphs), the singular faces
+inline std::array<unsigned char, 3> feature_colour() { return {235, 140, 0}; }
+
+// One panel: the surface, the field (lines or glyphs), the feature edges, the singular faces
 // (or vertices) marked by discs so that they are seen even when smaller than a pixel.
 inline void draw_view(const Scene& s, const View& view, double mean_edge, const Anchors& anchors, Canvas& canvas)
 {
@@ -408,6 +411,9 @@ inline void draw_view(const Scene& s, const View& view, double mean_edge, const 
     if(s.degree % 2 == 1) draw_arrowheads(polyline, view, canvas);
   }
   if(s.polylines.empty()) draw_glyphs(s, view, anchors, mean_edge, canvas);
+  for(const auto& e : s.feature_edges)  // two pixels wide, so that they stand out of the field's lines
+    for(const V3& shift : {V3{0., 0., 0.}, V3{1., 0., 0.}, V3{0., 1., 0.}})
+      canvas.line(screen[e[0]] + shift, screen[e[1]] + shift, feature_colour(), 3.);
   for(std::size_t f = 0; f < s.triangles.size() && f < s.face_index.size(); ++f)
   {
     if(s.face_index[f] == 0) continue;
@@ -439,13 +445,18 @@ inline void draw_legend(const Scene& s, int y0, Canvas& canvas)
     if(k != 0) ++count[k];
   int x = 220;
   text(canvas, x, y0 + 18, count.empty() ? "no singularity" : "index:", 3, ink);
-  x += 7 * 18;
+  x += (count.empty() ? 15 : 7) * 18;
   for(auto it = count.rbegin(); it != count.rend() && x < canvas.w - 200; ++it)
   {
     canvas.disc(V3{x + 10., y0 + 28., 0.}, 10., index_colour(it->first));
     const std::string label = index_label(it->first, s.degree) + " x" + std::to_string(it->second);
     text(canvas, x + 28, y0 + 18, label, 3, ink);
     x += 28 + 18 * static_cast<int>(label.size()) + 30;
+  }
+  if(!s.feature_edges.empty() && x < canvas.w - 200)  // after the indices, where there is room
+  {
+    canvas.disc(V3{x + 10., y0 + 28., 0.}, 10., feature_colour());
+    text(canvas, x + 28, y0 + 18, "features", 3, ink);
   }
 }
 

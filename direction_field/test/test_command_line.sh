@@ -351,6 +351,34 @@ assert 0.1 < white / (w * h) < 0.9, white / (w * h)   # a shape on a background
 assert dark > 1000                                     # the field's strokes
 EOF
 fi
+# The picture draws the kept feature edges in orange (235, 140, 0), on faces
+# and on vertices alike, and nothing orange without them.
+if [ -n "$shared" ] && [ -f "$shared/fandisk.off" ]; then
+  "$bin" "$shared/fandisk.off" --on faces --feature-angle 35 --png "$out/fandisk_f.png" --quiet &&
+    "$bin" "$shared/fandisk.off" --feature-angle 35 --png "$out/fandisk_v.png" --quiet &&
+    "$bin" "$shared/fandisk.off" --on faces --png "$out/fandisk_none.png" --quiet
+  check "fandisk pictures with and without features" test $? -eq 0
+  check "the picture draws the feature edges" python_checks "$out/fandisk_f.png" "$out/fandisk_v.png" \
+    "$out/fandisk_none.png" <<'EOF'
+import struct, sys, zlib
+def orange(path):
+    data = open(path, "rb").read()
+    w, h = struct.unpack(">II", data[16:24])
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"IDAT": idat += data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    count = 0
+    for r in range(h):
+        row = raw[r * (3 * w + 1) + 1:(r + 1) * (3 * w + 1)]
+        count += sum(1 for i in range(0, len(row), 3) if row[i:i + 3] == b"\xeb\x8c\x00")
+    return count
+faces, vertices, none = (orange(p) for p in sys.argv[1:4])
+assert faces > 5000 and vertices > 5000 and none == 0, (faces, vertices, none)
+EOF
+fi
 # The same input gives the same digits, also where two factorizations could
 # run side by side (the Hopf estimate's and the aligned system's): three runs.
 if [ -n "$shared" ] && [ -f "$shared/fertility.off" ]; then

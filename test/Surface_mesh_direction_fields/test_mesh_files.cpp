@@ -182,7 +182,7 @@ int main()
                  png_snapshot::index_label(-3, 6) == "-1/2",
                "legend labels: +1, -1, +1/2, -1/4 (reduced)");
   bool every_character_drawn = true;  // what draw_legend() writes, but the spaces
-  for(char c : std::string("n = 0123456789 index: +-/ x no singularity"))
+  for(char c : std::string("n = 0123456789 index: +-/ x no singularity features"))
     every_character_drawn = every_character_drawn && (c == ' ' || png_snapshot::glyph_rows(c) != nullptr);
   report.check(every_character_drawn, "the legend's font has every character the legend writes");
   check_picture_views(report);
