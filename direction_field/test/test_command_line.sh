@@ -46,7 +46,9 @@ sed '3s/.*/nan 0 0/' "$out/octahedron.off" > "$out/nan.off"
 { sed -n '3,8p' "$out/octahedron.off" | awk '{print "v", $1, $2, $3}';
   sed -n '9,16p' "$out/octahedron.off" | awk '{print "f", $2+1, $3+1, $4+1}'; } > "$out/octahedron.obj"
 
-python_checks() { python3 - "$@"; }
+# the checks can import png_pixels.py from this folder
+test_folder="$(cd "$(dirname "$0")" && pwd)"
+python_checks() { PYTHONPATH="$test_folder${PYTHONPATH:+:$PYTHONPATH}" python3 - "$@"; }
 
 # 1. Default mesh, JSON: one line with every documented key.
 "$bin" --json > "$out/default.json" 2> "$out/default.err"
@@ -333,20 +335,11 @@ if [ -n "$shared" ] && [ -f "$shared/sphere_oded.off" ]; then
   "$bin" "$shared/sphere_oded.off" --degree 4 --png "$out/sphere.png" --json > "$out/sphere.json"
   check "sphere_oded run" test $? -eq 0
   check "PNG is a non-blank picture" python_checks "$out/sphere.png" <<'EOF'
-import struct, sys, zlib
-data = open(sys.argv[1], "rb").read()
-assert data[:8] == b"\x89PNG\r\n\x1a\n"
-w, h = struct.unpack(">II", data[16:24])
-pos, idat = 8, b""
-while pos < len(data):
-    length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-    if kind == b"IDAT": idat += data[pos + 8:pos + 8 + length]
-    pos += 12 + length
-raw = zlib.decompress(idat)
-assert len(raw) == h * (3 * w + 1)
-pixels = bytes(b for r in range(h) for b in raw[r * (3 * w + 1) + 1:(r + 1) * (3 * w + 1)])
-white = sum(1 for i in range(0, len(pixels), 3) if pixels[i:i + 3] == b"\xff\xff\xff")
-dark = sum(1 for i in range(0, len(pixels), 3) if max(pixels[i:i + 3]) < 60)
+import sys
+from png_pixels import read_png
+w, h, pixels = read_png(sys.argv[1])
+white = sum(1 for p in pixels if p == (255, 255, 255))
+dark = sum(1 for p in pixels if max(p) < 60)
 assert 0.1 < white / (w * h) < 0.9, white / (w * h)   # a shape on a background
 assert dark > 1000                                     # the field's strokes
 EOF
@@ -360,21 +353,10 @@ if [ -n "$shared" ] && [ -f "$shared/fandisk.off" ]; then
   check "fandisk pictures with and without features" test $? -eq 0
   check "the picture draws the feature edges" python_checks "$out/fandisk_f.png" "$out/fandisk_v.png" \
     "$out/fandisk_none.png" <<'EOF'
-import struct, sys, zlib
+import sys
+from png_pixels import read_png
 def orange(path):
-    data = open(path, "rb").read()
-    w, h = struct.unpack(">II", data[16:24])
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        if kind == b"IDAT": idat += data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    count = 0
-    for r in range(h):
-        row = raw[r * (3 * w + 1) + 1:(r + 1) * (3 * w + 1)]
-        count += sum(1 for i in range(0, len(row), 3) if row[i:i + 3] == b"\xeb\x8c\x00")
-    return count
+    return sum(1 for p in read_png(path)[2] if p == (235, 140, 0))
 faces, vertices, none = (orange(p) for p in sys.argv[1:4])
 assert faces > 5000 and vertices > 5000 and none == 0, (faces, vertices, none)
 EOF

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <utility>
@@ -238,6 +239,46 @@ struct Face_direction_field_result
   std::size_t number_of_cancelled_pairs = 0;
   /// wall-clock times
   Direction_field_timings timings;
+};
+
+/*!
+\ingroup PkgSurfaceMeshDirectionFieldsRef
+
+What `compute_globally_optimal_point_set_directions()` found besides the
+directions. Points are numbered in the order of the range; triangles list three
+point numbers, counter-clockwise about the points' normals.
+*/
+struct Point_set_direction_field_result
+{
+  /// the normal used at each point (given, or estimated), of unit length
+  std::vector<std::array<double, 3> > normals;
+  /// whether the normals were estimated (no `normal_map` given)
+  bool normals_estimated = false;
+  /// the magnitude of the field at each point, relative to its largest in the point's component (1 there; the
+  /// directions are less certain where it is small, as on a mesh)
+  std::vector<double> magnitudes;
+  /// the triangles of the local triangulations, each once
+  std::vector<std::array<std::size_t, 3> > triangles;
+  /// for each triangle, how many of its three points' local triangulations hold it (1 to 3)
+  std::vector<unsigned char> holders;
+  /// for each triangle, whether it belongs to the surface the singularities are read on: the triangles taken
+  /// by decreasing holders, each unless one of its sides, in its direction, belongs to one taken before
+  std::vector<unsigned char> on_surface;
+  /// the surface triangles around which the field turns, with their integer index `k` (the index is `k / n`)
+  std::vector<std::pair<std::size_t, int> > singular_triangles;
+  /// per connected component (points joined by triangles), as on a mesh
+  std::vector<Component_report> components;
+  /// the points in no triangle: they receive the zero vector
+  std::size_t number_of_points_without_triangles = 0;
+  /// the Euler characteristic V - E + F of the surface triangles; where the surface closes, the indices of
+  /// `singular_triangles` add up to `n` times it (the user manual says when they may not elsewhere)
+  int surface_euler_characteristic = 0;
+  /// whether every side of a surface triangle is a side of another one
+  bool surface_is_closed = false;
+  /// where the time went: `setup_ms` holds the neighbours, the local triangulations and the assembly
+  Direction_field_timings timings;
+  /// of `timings.setup_ms`, the estimation of the normals (0 when they are given)
+  double normals_ms = 0.;
 };
 
 } // namespace Surface_mesh_direction_fields
