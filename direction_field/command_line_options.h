@@ -34,6 +34,7 @@ struct Options
   std::string directions, singularities, png, json_file;
   std::string vtk, vtk_singularities, ply, rosy, ffield, singularity_list, streamlines, mesh_out;
   std::string on = "vertices";  // --on: where the field lives (vertices, or faces with singular vertices)
+  std::string non_manifold = "glue";  // --non-manifold: a field on faces glued across non-manifold edges, or cut
   std::string sharp, rawfield, sing, matching;
   bool json = false, quiet = false;
   unsigned int seed = 0;
@@ -85,6 +86,10 @@ inline const Option_help option_help[] = {
                          "direction per face, singularities at vertices, a matching per edge (what quad meshers "
                          "read; s must be 0; outputs --rosy, --ffield, --sharp, --rawfield, --sing, --matching, "
                          "--singularities, --vtk, --vtk-singularities, --streamlines, --png, --mesh-out, --json)"},
+  {"Field", "--non-manifold HOW", "with --on faces: glue (default): the faces around a non-manifold edge share "
+                                  "the field there, the mesh stays whole; cut: the repair's cut pieces are "
+                                  "fields of their own (as always on vertices; needed by --prescribe and "
+                                  "--cancel-singularities on such a mesh)"},
   {"Field", "--seed N", "the seed of the random start vector of the eigen-solve (default 0)"},
   {"Field", "--max-iterations N", "the largest number of eigen-solve iterations (default 1000)"},
   {"Field", "--tolerance T", "the relative residual at which the eigen-solve stops (default 1e-10)"},
@@ -176,8 +181,8 @@ inline const char* const usage =
   "                       [--vtk FILE] [--vtk-singularities FILE] [--ply FILE] [--rosy FILE] [--ffield FILE]\n"
   "                       [--singularity-list FILE]"
   " [--streamlines FILE] [--mesh-out FILE] [--quiet]\n"
-  "                       [--on vertices|faces] [--sharp FILE] [--rawfield FILE] [--sing FILE]\n"
-  "                       [--matching FILE]\n"
+  "                       [--on vertices|faces] [--non-manifold glue|cut] [--sharp FILE] [--rawfield FILE]\n"
+  "                       [--sing FILE] [--matching FILE]\n"
   "                       [--solver default|petsc]"
   " [--petsc-options TEXT] [--distribute-from N] [--prescribe FILE]\n"
   "                       [--huge-pages auto|on|off]\n"
@@ -311,6 +316,7 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   }
   else if(a == "--solver") o.solver = v;
   else if(a == "--on") o.on = v;
+  else if(a == "--non-manifold") o.non_manifold = v;
   else if(a == "--petsc-options") o.petsc_options = v;
   else if(a == "--distribute-from") { o.distribute_from = parse_count(a, v); o.distribute_from_given = true; }
   else if(a == "--huge-pages") o.huge_pages = v;
@@ -334,6 +340,8 @@ inline void check_prescription_options(const Options& o)
 inline void check_field_location_options(const Options& o)
 {
   if(o.on != "vertices" && o.on != "faces") throw Usage_error("--on expects vertices or faces, got '" + o.on + "'");
+  if(o.non_manifold != "glue" && o.non_manifold != "cut")
+    throw Usage_error("--non-manifold expects glue or cut, got '" + o.non_manifold + "'");
   if(o.on == "vertices")
   {
     const std::pair<const char*, const std::string*> face_files[] = {

@@ -51,6 +51,7 @@
 #include <iomanip>
 #include <iostream>
 #include <array>
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <regex>
@@ -519,6 +520,20 @@ void report_out_of_memory(Progress& progress)
   std::cerr << "direction_field: error: out of memory" << (step.empty() ? "" : " while " + step) << std::endl;
 }
 
+// The point each vertex copies, for the field on faces: with --non-manifold
+// glue, the file's vertex where the repair cut the mesh (a non-manifold edge
+// or vertex), else the vertex itself (nothing glued).
+std::vector<std::size_t> points_of_vertices(const Options& o, const Repaired_mesh<Mesh>& input)
+{
+  const bool glue = input.report.duplicated_vertices > 0 && o.non_manifold == "glue";
+  std::vector<std::size_t> points(input.mesh.number_of_vertices());
+  for(std::size_t v = 0; v < points.size(); ++v) points[v] = glue ? input.file_vertex_of_vertex[v] : v;
+  if(glue && (!o.prescribe.empty() || o.cancel_singularities > 0.) && face_field_run::non_manifold_edges(input.mesh, points) > 0)
+    throw Usage_error(std::string(o.prescribe.empty() ? "--cancel-singularities" : "--prescribe") +
+                      " on a mesh with non-manifold edges needs --non-manifold cut");
+  return points;
+}
+
 // --on faces: the field on the faces, its files and its report.
 int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& progress, Program_timings& timings,
                  Output_files& outputs)
@@ -530,7 +545,8 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
   {
     const std::vector<std::pair<Vertex_index, int> > prescription =
       o.prescribe.empty() ? std::vector<std::pair<Vertex_index, int> >() : read_vertex_prescription(o, input.mesh);
-    field = face_field_run::compute(o, input.mesh, o.prescribe.empty() ? nullptr : &prescription,
+    field = face_field_run::compute(o, input.mesh, points_of_vertices(o, input),
+                                    o.prescribe.empty() ? nullptr : &prescription,
                                     [&progress](double done) { return progress.fraction(done); });
   }
   catch(const SMDF::Invalid_input_error& e)

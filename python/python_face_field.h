@@ -23,7 +23,7 @@ struct Face_field_result
 const char* const face_option_names[] = {"degree", "align", "boundary", "guidance", "alignment_weight", "lambda_t",
                                          "constraints", "feature_edges", "feature_angle", "feature_cleanup", "prescribed",
                                          "singularity_cancellation_radius", "intrinsic_mollification",
-                                         "max_iterations", "tolerance", "seed"};
+                                         "max_iterations", "tolerance", "seed", "vertex_point_index"};
 
 struct Face_options
 {
@@ -32,7 +32,23 @@ struct Face_options
   std::vector<std::pair<Face_index, Kernel::Vector_3> > constraints;  // (face, direction)
   std::optional<std::vector<std::pair<Vertex_index, int> > > prescribed;  // (vertex, k)
   double cancellation_radius = 0.;  // singularity_cancellation_radius
+  std::vector<std::size_t> point_of_vertex;  // vertex_point_index; else each vertex its own point
 };
+
+// vertex_point_index (|V|,): the point each vertex copies (repair_mesh's
+// 'file_vertex_of_vertex'): faces around a non-manifold edge are glued there.
+void read_vertex_points(const py::object& value, const Mesh& mesh, Face_options& o)
+{
+  const Index_array a = integer_array(value, "vertex_point_index");
+  if(a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != mesh.number_of_vertices())
+    refuse("vertex_point_index must have one entry per vertex (" + std::to_string(mesh.number_of_vertices()) + ")");
+  const auto r = a.unchecked<1>();
+  for(py::ssize_t v = 0; v < a.shape(0); ++v)
+  {
+    if(r(v) < 0) refuse("vertex_point_index: vertex " + std::to_string(v) + " has a negative point");
+    o.point_of_vertex[static_cast<std::size_t>(v)] = static_cast<std::size_t>(r(v));
+  }
+}
 
 // prescribed = k x 2 (vertex, k): index k / n at interior vertices
 void read_prescribed_vertices(const py::object& value, const Mesh& mesh, Face_options& o)
@@ -78,7 +94,8 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
     const std::string key = py::cast<std::string>(item.first);
     if(std::find(std::begin(face_option_names), std::end(face_option_names), key) == std::end(face_option_names))
       throw py::type_error("unexpected keyword argument '" + key + "'");
-    if(key != "guidance" && key != "constraints" && key != "prescribed" && key != "singularity_cancellation_radius")
+    if(key != "guidance" && key != "constraints" && key != "prescribed" && key != "singularity_cancellation_radius" &&
+       key != "vertex_point_index")
       common[item.first] = item.second;
   }
   Face_options o;
@@ -104,6 +121,10 @@ Face_options read_face_options(const py::dict& kw, Mesh& mesh)
       refuse("prescribed singularities take no lambda_t or alignment_weight");
     read_prescribed_vertices(kw["prescribed"], mesh, o);
   }
+  o.point_of_vertex.resize(mesh.number_of_vertices());
+  for(std::size_t v = 0; v < o.point_of_vertex.size(); ++v) o.point_of_vertex[v] = v;
+  if(kw.contains("vertex_point_index") && !kw["vertex_point_index"].is_none())
+    read_vertex_points(kw["vertex_point_index"], mesh, o);
   if(kw.contains("singularity_cancellation_radius") && !kw["singularity_cancellation_radius"].is_none())
     o.cancellation_radius = option_as<double>(kw["singularity_cancellation_radius"],
                                               "singularity_cancellation_radius", "a number");
@@ -137,7 +158,8 @@ SMDF::Face_direction_field_result compute_on_faces(Mesh& mesh, const Face_option
                     .face_constrained_direction_map(CGAL::make_property_map(wanted))
                     .singularities_output_iterator(std::back_inserter(singular))
                     .edge_matching_map(CGAL::make_property_map(matching))
-                    .singularity_cancellation_radius(o.cancellation_radius);
+                    .singularity_cancellation_radius(o.cancellation_radius)
+                    .vertex_point_index_map(CGAL::make_property_map(o.point_of_vertex));
   auto out = CGAL::make_property_map(directions);
   auto with_guidance = [&](auto np_) {
     if(guidance.empty()) return SMDF::compute_globally_optimal_face_directions(mesh, out, np_);
@@ -231,7 +253,7 @@ const char* const face_doc =
   "                        constraints=None, boundary=None, feature_edges=None, feature_angle=None, feature_cleanup=4,\n"
   "                        prescribed=None, singularity_cancellation_radius=0.0, intrinsic_mollification=1e-6,\n"
   "                        max_iterations=1000, tolerance=1e-10,\n"
-  "                        seed=0)\n\n"
+  "                        seed=0, vertex_point_index=None)\n\n"
   "The smoothest (or aligned) n-direction field on the faces of the mesh (V, F): one direction per face,\n"
   "singularities at vertices, the principal matching per edge (user manual, 'Fields on Faces'). guidance is\n"
   "(|F|, 3), constraints a pair (face ids, directions). Returns a FaceField: face_directions and pd2 (|F|, 3;\n"
@@ -244,7 +266,10 @@ const char* const face_doc =
   "singularity_cancellation_radius > 0 removes the pairs of singular vertices of opposite index at most that far\n"
   "apart along the edges (a fraction of the bounding box's diagonal, e.g. 0.1) and returns the parallel field\n"
   "with the others or, with features, constraints, boundary, lambda_t or alignment_weight, the same field turned\n"
-  "off the constrained faces: fewer irregular vertices in quad meshes (cancelled_pairs counts them).";
+  "off the constrained faces: fewer irregular vertices in quad meshes (cancelled_pairs counts them).\n"
+  "vertex_point_index (|V|,) keeps a non-manifold surface whole: vertices with the same value are copies of one\n"
+  "point (repair_mesh(V, F, with_maps=True).maps['file_vertex_of_vertex']), and the faces around an edge of\n"
+  "three faces or more are glued there (not with prescribed or singularity_cancellation_radius).";
 
 void bind_face_field(py::module_& m)
 {

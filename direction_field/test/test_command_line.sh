@@ -733,6 +733,29 @@ for bad in two line short_line nan empty folder; do
         test $status -eq 1 -a "$(wc -l < "$out/bad.err")" -eq 1 -a ! -e "$out/bad_dir.txt"
 done
 
+# A non-manifold mesh: a tetrahedron with a fin on one edge (three faces
+# there). --on faces glues the fin back (one component, the mesh's file
+# numbering in every output), --non-manifold cut keeps the repair's pieces.
+printf 'OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.5 -0.8 0.3\n' > "$out/fin.off"
+printf '3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 0 1 4\n' >> "$out/fin.off"
+"$bin" "$out/fin.off" --on faces --json --rawfield "$out/fin_glued.raw" > "$out/fin_glued.json" &&
+  "$bin" "$out/fin.off" --on faces --non-manifold cut --json > "$out/fin_cut.json"
+check "--non-manifold glue and cut run" test $? -eq 0
+check "--on faces glues a non-manifold edge (1 component), cut keeps 2; a face per file face" \
+  python_checks "$out/fin_glued.json" "$out/fin_cut.json" "$out/fin_glued.raw" <<'EOF'
+import json, sys
+glued, cut = (json.load(open(p)) for p in sys.argv[1:3])
+assert glued["components"] == 1 and cut["components"] == 2, (glued["components"], cut["components"])
+assert glued["glued_edges"] == 1 and cut["glued_edges"] == 0
+assert glued["index_sum"] + glued["boundary_index"] == 4 * glued["euler_characteristic"], glued
+assert open(sys.argv[3]).readline().split() == ["4", "5"]
+EOF
+"$bin" "$out/fin.off" --on faces --non-manifold sew > /dev/null 2> "$out/nm.err"
+check "--non-manifold sew: exit 1, one line" test $? -eq 1 -a "$(wc -l < "$out/nm.err")" -eq 1
+"$bin" "$out/fin.off" --on faces --cancel-singularities 0.1 > /dev/null 2> "$out/nm.err"
+check "--cancel-singularities on a glued non-manifold mesh: exit 1, names --non-manifold cut" \
+  grep -q -- "--non-manifold cut" "$out/nm.err"
+
 echo "command line: $passed passed, $failed failed"
 test $failed -eq 0 || exit 1
 # 77: the shared-mesh checks left out, reported as SKIP (SKIP_RETURN_CODE)

@@ -62,7 +62,7 @@ def _face_keywords(*, degree: int = 4, align: Optional[str] = None, guidance: An
                    boundary: Optional[str] = None, feature_edges: Any = None, feature_angle: Optional[float] = None,
                    feature_cleanup: int = 4, prescribed: Any = None, singularity_cancellation_radius: float = 0.0,
                    intrinsic_mollification: float = 1e-6, max_iterations: int = 1000, tolerance: float = 1e-10,
-                   seed: int = 0) -> None:
+                   seed: int = 0, vertex_point_index: Any = None) -> None:
     """The keyword arguments of a field on faces, with the defaults the C++ side applies."""
 
 

@@ -105,7 +105,7 @@ def compute_face_directions(
     boundary: Optional[str] = None, feature_edges: Optional[npt.ArrayLike] = None,
     feature_angle: Optional[float] = None, feature_cleanup: int = 4, prescribed: Optional[npt.ArrayLike] = None,
     singularity_cancellation_radius: float = 0.0, intrinsic_mollification: float = 1e-6, max_iterations: int = 1000,
-    tolerance: float = 1e-10, seed: int = 0) -> FaceField: ...
+    tolerance: float = 1e-10, seed: int = 0, vertex_point_index: Optional[npt.ArrayLike] = None) -> FaceField: ...
 
 class PointSetField:
     directions: npt.NDArray[np.float64]          # (N, 3) unit direction per point (zero: in no triangle)

@@ -197,6 +197,53 @@ def test_face_field_constraints_and_refusals():
     assert guided.index_sum == 8
 
 
+def cube_with_fin():
+    """The surface of the unit cube (4 x 4 squares a side) and a 2 x 2 square fin standing on its top along
+    y = 0.5: two non-manifold edges, three faces each."""
+    points, faces = {}, []
+
+    def point(p):
+        return points.setdefault(tuple(np.round(p, 12)), len(points))
+    for axis in range(3):
+        for side in (0, 1):
+            for i in range(4):
+                for j in range(4):
+                    def at(a, b):
+                        p = np.zeros(3)
+                        p[axis], p[(axis + 1) % 3], p[(axis + 2) % 3] = side, a / 4, b / 4
+                        return point(p)
+                    a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
+                    faces += [(a, b, c), (a, c, d)] if side else [(a, c, b), (a, d, c)]
+    for i in range(2):
+        for j in range(2):
+            def at(a, b):
+                return point((0.25 + 0.25 * a, 0.5, 1 + 0.25 * b))
+            faces += [(at(i, j), at(i + 1, j), at(i + 1, j + 1)), (at(i, j), at(i + 1, j + 1), at(i, j + 1))]
+    V = np.array(sorted(points, key=points.get), dtype=float)
+    return V, np.array(faces, dtype=np.int64)
+
+
+def test_face_field_on_a_non_manifold_mesh_kept_whole():
+    """repair_mesh cuts the fin off the cube; vertex_point_index glues it back: one component whose cross
+    field is parallel (eigenvalue 0), against two fields of their own when cut."""
+    V, F = cube_with_fin()
+    repaired = smdf.repair_mesh(V, F, with_maps=True)
+    V2, F2 = repaired
+    assert len(V2) > len(V) and repaired.repairs["vertices_duplicated"] > 0
+    glued = smdf.compute_face_directions(V2, F2, vertex_point_index=repaired.maps["file_vertex_of_vertex"])
+    cut = smdf.compute_face_directions(V2, F2)
+    assert len(glued.eigenvalues) == 1 and len(cut.eigenvalues) == 2 and abs(glued.eigenvalues[0]) < 1e-10
+    assert glued.index_sum + sum(glued.boundary_indices) == 4 * sum(glued.euler_characteristics)
+    # the fin's field is the cube's, turned about the edge: its directions lie along the axes as the cube's do
+    axis_aligned = np.abs(glued.face_directions).max(axis=1)
+    assert np.ptp(axis_aligned) < 1e-8
+    with pytest.raises(ValueError, match="one entry per vertex"):
+        smdf.compute_face_directions(V2, F2, vertex_point_index=np.arange(3))
+    with pytest.raises(smdf.InvalidInputError, match="glued"):
+        smdf.compute_face_directions(V2, F2, vertex_point_index=repaired.maps["file_vertex_of_vertex"],
+                                     singularity_cancellation_radius=0.1)
+
+
 def test_face_field_prescribed_vertices():
     """Singularities placed at vertices come back exactly, an opposite pair at the ends of one edge included."""
     V, F = refined_octahedron_arrays(3)

@@ -7,14 +7,19 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
 
 #include "test_types.h"
 #include "generated_meshes.h"
 #include "test_support.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <iostream>
 #include <map>
 #include <string>
@@ -541,6 +546,189 @@ void check_lambda_units()
                "faces: lambda_t / 1e-70 on the mesh scaled by 1e-35 gives the same field (" + std::to_string(worst) + ")");
 }
 
+// Non-manifold meshes kept whole (vertex_point_index_map): a soup with
+// non-manifold edges, cut into a mesh by orient_polygon_soup() (which copies
+// the points it cuts at), and the point each vertex copies.
+struct Soup
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > triangles;
+  std::map<std::array<double, 3>, std::size_t> index;
+  std::size_t point(double x, double y, double z)
+  {
+    const auto found = index.emplace(std::array<double, 3>{x, y, z}, points.size());
+    if(found.second) points.emplace_back(x, y, z);
+    return found.first->second;
+  }
+  // the surface of the cube [o, o + 1]^3, m x m squares per side, each in two triangles, outward
+  void add_cube(double ox, double oy, double oz, int m)
+  {
+    for(int axis = 0; axis < 3; ++axis)
+      for(int side = 0; side < 2; ++side)
+        for(int i = 0; i < m; ++i)
+          for(int j = 0; j < m; ++j)
+          {
+            auto at = [&](int a, int b) {
+              double p[3];
+              p[axis] = side;
+              p[(axis + 1) % 3] = double(a) / m;
+              p[(axis + 2) % 3] = double(b) / m;
+              return point(ox + p[0], oy + p[1], oz + p[2]);
+            };
+            const std::size_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            if(side == 1) { triangles.push_back({a, b, c}); triangles.push_back({a, c, d}); }
+            else { triangles.push_back({a, c, b}); triangles.push_back({a, d, c}); }
+          }
+  }
+};
+
+struct Glued_mesh
+{
+  Mesh mesh;
+  std::vector<std::size_t> point_of_vertex;  // by vertex index
+};
+
+Glued_mesh cut_into_mesh(Soup soup)
+{
+  Glued_mesh g;
+  const std::size_t original = soup.points.size();
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(soup.points, soup.triangles);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, g.mesh);
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+  {
+    const Point_3& p = soup.points[v];
+    g.point_of_vertex.push_back(v < original ? v : soup.index.at({p.x(), p.y(), p.z()}));
+  }
+  return g;
+}
+
+// The angle of d from the direction of a -> b, counter-clockwise about face f's normal.
+double angle_from_side(const Mesh& mesh, Face_index f, const Point_3& a, const Point_3& b, const Vector_3& d)
+{
+  const auto h = mesh.halfedge(f);
+  const Vector_3 normal = CGAL::cross_product(mesh.point(mesh.target(h)) - mesh.point(mesh.source(h)),
+                                              mesh.point(mesh.target(mesh.next(h))) - mesh.point(mesh.source(h)));
+  const Vector_3 e = b - a;
+  return std::atan2(CGAL::cross_product(e, d) * normal / std::sqrt(normal.squared_length()), e * d);
+}
+
+// Per pair of faces on one non-manifold edge (three faces or more there), n times the difference of their
+// directions' angles from the edge (each about its own normal), reduced to (-pi, pi]: 0 where the field is
+// parallel across the pair.
+std::vector<double> glued_differences(const Glued_mesh& g, const Face_field& field, int n)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<Mesh::Halfedge_index> > sides;
+  for(Face_index f : faces(g.mesh))
+    for(auto h : CGAL::halfedges_around_face(g.mesh.halfedge(f), g.mesh))
+    {
+      const std::size_t a = g.point_of_vertex[g.mesh.source(h)], b = g.point_of_vertex[g.mesh.target(h)];
+      sides[{(std::min)(a, b), (std::max)(a, b)}].push_back(h);
+    }
+  std::vector<double> differences;
+  for(const auto& edge : sides)
+  {
+    if(edge.second.size() < 3) continue;
+    const Point_3& a = g.mesh.point(g.mesh.source(edge.second[0]));
+    const Point_3& b = g.mesh.point(g.mesh.target(edge.second[0]));
+    std::vector<double> angle;
+    for(auto h : edge.second)
+      angle.push_back(angle_from_side(g.mesh, g.mesh.face(h), a, b, field.directions[g.mesh.face(h).idx()]));
+    for(std::size_t i = 0; i < angle.size(); ++i)
+      for(std::size_t j = i + 1; j < angle.size(); ++j)
+        differences.push_back(std::remainder(n * (angle[j] - angle[i]), 2 * CGAL_PI));
+  }
+  return differences;
+}
+
+// A fin (a 2 x 2 square standing on the top of a cube) and two cubes sharing an edge: every face is flat
+// and every edge along an axis, so the glued cross field is parallel (eigenvalue 0, no turn across any
+// pair of faces on a non-manifold edge) and one component; cut, each piece is a field of its own.
+void check_glued_cubes(const std::string& what, const Soup& soup, std::size_t pieces)
+{
+  const Glued_mesh g = cut_into_mesh(soup);
+  const auto point_map = CGAL::make_property_map(g.point_of_vertex);
+  const Face_field glued = face_field(g.mesh, params::degree(4).vertex_point_index_map(point_map));
+  const Face_field cut = face_field(g.mesh, params::degree(4));
+  report.check(glued.result.components.size() == 1 && cut.result.components.size() == pieces,
+               what + ": one component glued (" + std::to_string(glued.result.components.size()) + "), " +
+                 std::to_string(pieces) + " cut (" + std::to_string(cut.result.components.size()) + ")");
+  report.check(std::abs(glued.result.components[0].eigenvalue.value_or(1.)) < 1e-10, what + ": eigenvalue 0");
+  double worst = 0.;
+  for(double d : glued_differences(g, glued, 4)) worst = (std::max)(worst, std::abs(d));
+  report.check(worst < 1e-8, what + ": parallel across the glued pairs (" + std::to_string(worst) + ")");
+  check_poincare_hopf(glued, 4, what + ", glued");
+  check_directions(g.mesh, glued, what + ", glued");
+}
+
+void check_non_manifold_meshes()
+{
+  Soup fin;
+  fin.add_cube(0, 0, 0, 4);
+  for(int i = 0; i < 2; ++i)
+    for(int j = 0; j < 2; ++j)
+    {
+      auto at = [&](int a, int b) { return fin.point(0.25 + 0.25 * a, 0.5, 1. + 0.25 * b); };
+      fin.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      fin.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  check_glued_cubes("a fin on a cube", fin, 2);
+  Soup two;
+  two.add_cube(0, 0, 0, 3);
+  two.add_cube(1, 1, 0, 3);
+  check_glued_cubes("two cubes sharing an edge", two, 2);
+
+  // Two cubes sharing a vertex: no non-manifold edge, nothing glued; the same field with or without the map.
+  Soup bowtie;
+  bowtie.add_cube(0, 0, 0, 3);
+  bowtie.add_cube(1, 1, 1, 3);
+  const Glued_mesh b = cut_into_mesh(bowtie);
+  const Face_field with =
+    face_field(b.mesh, params::degree(4).vertex_point_index_map(CGAL::make_property_map(b.point_of_vertex)));
+  const Face_field without = face_field(b.mesh, params::degree(4));
+  report.check(with.directions == without.directions && with.result.components.size() == 2,
+               "two cubes sharing a vertex: two fields, the map changes nothing");
+
+  // A curved surface with fins: an icosphere with a triangle standing on 6 of its edges. Each fin follows
+  // its two neighbours: n times its angle lies on the shorter arc between theirs.
+  Mesh sphere;
+  make_icosphere(sphere, 2);
+  Soup fins;
+  for(Vertex_index v : vertices(sphere)) fins.point(sphere.point(v).x(), sphere.point(v).y(), sphere.point(v).z());
+  for(Face_index f : faces(sphere))
+  {
+    fins.triangles.emplace_back();
+    for(Vertex_index v : CGAL::vertices_around_face(sphere.halfedge(f), sphere)) fins.triangles.back().push_back(v);
+  }
+  for(std::size_t k = 0; k < 6; ++k)
+  {
+    const auto e = *std::next(edges(sphere).begin(), static_cast<std::ptrdiff_t>(37 * k));
+    const Point_3 &p = sphere.point(source(e, sphere)), &q = sphere.point(target(e, sphere));
+    const Point_3 apex = CGAL::midpoint(p, q) + 0.3 * (CGAL::midpoint(p, q) - CGAL::ORIGIN);
+    fins.triangles.push_back({std::size_t(source(e, sphere)), std::size_t(target(e, sphere)),
+                              fins.point(apex.x(), apex.y(), apex.z())});
+  }
+  const Glued_mesh g = cut_into_mesh(fins);
+  const Face_field glued =
+    face_field(g.mesh, params::degree(4).vertex_point_index_map(CGAL::make_property_map(g.point_of_vertex)));
+  report.check(glued.result.components.size() == 1, "a sphere with fins: one component glued");
+  check_poincare_hopf(glued, 4, "a sphere with fins, glued");
+  const std::vector<double> d = glued_differences(g, glued, 4);  // per fin: sphere-sphere, sphere-fin, sphere-fin
+  bool between = d.size() == 18;
+  for(std::size_t k = 0; between && k < 6; ++k)
+  {
+    const double ab = d[3 * k], ac = d[3 * k + 1], bc = d[3 * k + 2];  // the fin is the side listed last
+    between = (ab >= 0. ? ac >= -1e-9 && ac <= ab + 1e-9 : ac <= 1e-9 && ac >= ab - 1e-9) &&
+              std::abs(std::remainder(ac - ab - bc, 2 * CGAL_PI)) < 1e-9;
+  }
+  report.check(between, "a sphere with fins: each fin's direction between its two neighbours'");
+
+  bool refused = false;
+  try { face_field(g.mesh, params::degree(4).vertex_point_index_map(CGAL::make_property_map(g.point_of_vertex))
+                             .singularity_cancellation_radius(0.1)); }
+  catch(const SMDF::Invalid_input_error& e) { refused = true; std::cout << "  refused: " << e.what() << "\n"; }
+  report.check(refused, "glued non-manifold edges with singularity_cancellation_radius are refused");
+}
+
 int main()
 {
   check_lambda_units();
@@ -554,5 +742,6 @@ int main()
   check_prescriptions_on_torus_and_disk();
   check_prescription_refusals();
   check_singularity_cancellation();
+  check_non_manifold_meshes();
   return report.finish();
 }

@@ -78,7 +78,8 @@ public:
   \param tmesh the triangle mesh; it is not modified, and must outlive the object unchanged
   \param np an optional sequence of named parameters among `vertex_point_map`, `vertex_index_map`,
          `face_index_map`, `geom_traits` and `intrinsic_mollification`, with the meaning and defaults given
-         for `compute_globally_optimal_directions()`
+         for `compute_globally_optimal_directions()`, and `vertex_point_index_map` (see
+         `compute_globally_optimal_face_directions()`)
   \throws Invalid_input_error for the meshes `Globally_optimal_direction_field` refuses
   */
   template <typename NamedParameters = parameters::Default_named_parameters>
@@ -86,7 +87,8 @@ public:
                                                  const NamedParameters& np = parameters::default_values())
   {
     const auto start = Clock::now();
-    m_engine = std::make_unique<Engine>(m_indexing.index(tmesh, np), m_indexing.mollification);
+    internal::Indexed_mesh indexed = m_indexing.index(tmesh, np);
+    m_engine = std::make_unique<Engine>(std::move(indexed), m_indexing.mollification, m_indexing.point_of_vertex(np));
     m_construction_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }
 

@@ -107,6 +107,22 @@ interior vertices that satisfy Poincare-Hopf are shown exactly.
                    as key type and `bool` as value type}
     \cgalParamDefault{no feature}
   \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_index_map}
+    \cgalParamDescription{a non-manifold surface kept whole: vertices with the same value are copies of one point,
+                          as `CGAL::Polygon_mesh_processing::orient_polygon_soup()` makes them where it cuts a
+                          non-manifold edge or vertex (`polygon_soup_to_polygon_mesh()` keeps the order of the
+                          points, so that the value of a vertex can be the index of the soup's point it copies).
+                          The faces around an edge whose two ends are points shared by three or more faces are
+                          then glued there: each pair is coupled as two faces across an ordinary edge, turned
+                          about the edge until their normals agree, each pair with the weight of an ordinary
+                          edge over the number of faces less one. Their components are solved as one. The
+                          vertices on such an edge are boundary vertices of the copies (no index there, and the
+                          glued sides count as boundary in the reports). It excludes `prescribed_singularities`
+                          and `singularity_cancellation_radius` (user manual, section \ref SMDF_faces)}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and an integer type as value type}
+    \cgalParamDefault{every vertex its own point: nothing is glued}
+  \cgalParamNEnd
   \cgalParamNBegin{prescribed_singularities}
     \cgalParamDescription{places the singularities: the interior vertices listed get exactly the index `k / n`
                           given, every other interior vertex index 0, for any assignment whose indices add up to

@@ -55,3 +55,4 @@ CGAL_add_named_parameter(face_is_constrained_t, face_is_constrained, face_is_con
 CGAL_add_named_parameter(face_constrained_direction_map_t, face_constrained_direction_map, face_constrained_direction_map)
 CGAL_add_named_parameter(edge_matching_map_t, edge_matching_map, edge_matching_map)
 CGAL_add_named_parameter(number_of_neighbors_t, number_of_neighbors, number_of_neighbors)
+CGAL_add_named_parameter(vertex_point_index_t, vertex_point_index, vertex_point_index_map)

@@ -18,7 +18,9 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 
+#include <cstddef>
 #include <memory>
+#include <vector>
 
 // The seam between the mesh plumbing of
 // compute_globally_optimal_face_directions() and the method on the dual mesh
@@ -36,8 +38,11 @@ class Face_field_engine
 {
 public:
   // The intrinsic geometry of the mesh (its coordinates normalized), its
-  // components and the dual connection.
-  Face_field_engine(Indexed_mesh mesh, double mollification);
+  // components and the dual connection. `point_of_vertex` (empty, or one
+  // number per vertex): vertices of one number are copies of one point, and
+  // the faces around an edge of three sides or more between such points are
+  // glued there (user manual, section "Fields on Faces").
+  Face_field_engine(Indexed_mesh mesh, double mollification, std::vector<std::size_t> point_of_vertex = {});
   ~Face_field_engine();
   Face_field_engine(const Face_field_engine&) = delete;
   Face_field_engine& operator=(const Face_field_engine&) = delete;

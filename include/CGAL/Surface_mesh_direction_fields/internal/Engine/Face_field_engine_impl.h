@@ -60,7 +60,7 @@ namespace internal {
 // direction it must have (a unit complex number), from the feature edges,
 // the boundary and the user's constrained faces (which win).
 inline std::vector<Complex> face_constraints(const Indexed_mesh& m, const Tangent_spaces& ts,
-                                             const Face_field_request& request)
+                                             const Dual_connection& dc, const Face_field_request& request)
 {
   const int n = request.degree;
   std::vector<Complex> sum(m.number_of_faces(), Complex(0., 0.)), first(m.number_of_faces(), Complex(0., 0.));
@@ -79,7 +79,7 @@ inline std::vector<Complex> face_constraints(const Indexed_mesh& m, const Tangen
     const std::size_t f = corner / 3, a = m.vertex_of_corner(corner);
     const std::size_t b = m.vertex_of_corner(Indexed_mesh::next_corner(corner));
     const double angle = side_angle(ts, f, static_cast<int>(corner % 3));
-    if(m.twin_corner[corner] == no_index && request.boundary != Boundary_alignment::NONE)
+    if(m.twin_corner[corner] == no_index && !dc.is_glued[corner] && request.boundary != Boundary_alignment::NONE)
       add(f, angle + boundary_turn);
     else if(!features.empty() && features.count((std::min)(a, b) * nv + (std::max)(a, b)))
       add(f, angle);
@@ -134,18 +134,27 @@ class Face_field_engine<SparseSolver>::Impl
   typedef std::chrono::steady_clock Clock;
 
 public:
-  Impl(Indexed_mesh mesh, double mollification) : m_mesh(std::move(mesh))
+  Impl(Indexed_mesh mesh, double mollification, const std::vector<std::size_t>& point_of_vertex)
+    : m_mesh(std::move(mesh))
   {
     m_length_scale = normalize_coordinates(m_mesh);
     m_components = split_into_components(m_mesh);
     m_spaces = compute_tangent_spaces(m_mesh, mollification);
     check_components_have_area(m_mesh, m_components, m_spaces.mollification);
-    m_dual = dual_connection(m_mesh, m_spaces);
+    m_dual = dual_connection(m_mesh, m_spaces, point_of_vertex);
+    std::vector<std::pair<std::size_t, std::size_t> > coupled;
+    for(const Dual_connection::Glued_pair& glued : m_dual.glued)
+      coupled.emplace_back(glued.corner / 3, glued.other / 3);
+    join_components(m_components, coupled);
   }
 
   Face_direction_field_result compute(const Face_field_request& request, const SparseSolver* user_solver,
                                       Face_field_answer& answer) const
   {
+    if(!m_dual.glued.empty() && (request.prescribed || request.cancellation_radius > 0.))
+      throw Invalid_input_error(
+        std::string(request.prescribed ? "prescribed_singularities" : "singularity_cancellation_radius") +
+        " is not available where non-manifold edges are glued (vertex_point_index_map)");
     if(request.prescribed) return compute_prescribed(request, answer);
     const Face_direction_field_result optimal = compute_optimal(request, user_solver, answer);
     if(request.cancellation_radius == 0.) return optimal;
@@ -225,7 +234,7 @@ private:
                                                      Face_field_answer& answer) const
   {
     const auto start = Clock::now();
-    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, m_dual, request);
     std::vector<unsigned char> fixed(m_mesh.number_of_faces(), 0);
     for(std::size_t f = 0; f < fixed.size(); ++f) fixed[f] = constraints[f] != Complex(0., 0.);
     const std::vector<int>& own = answer.vertex_index;
@@ -300,7 +309,7 @@ private:
     const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
     progress.reached(0.);
     const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, m_components, request);
-    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, m_dual, request);
     Eigen_solve_options options;
     options.max_iterations = request.max_iterations;
     options.residual_tolerance = request.residual_tolerance;
@@ -449,7 +458,7 @@ private:
   void turn_towards_guidance(const Face_field_request& request, std::vector<double>& theta) const
   {
     const std::vector<Complex> guidance = face_guidance(m_mesh, m_spaces, m_components, request);
-    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, request);
+    const std::vector<Complex> constraints = face_constraints(m_mesh, m_spaces, m_dual, request);
     for(const Component& comp : m_components.list)
     {
       Complex sum(0., 0.);
@@ -552,8 +561,9 @@ private:
 };
 
 template <typename SparseSolver>
-Face_field_engine<SparseSolver>::Face_field_engine(Indexed_mesh mesh, double mollification)
-  : m_impl(new Impl(std::move(mesh), mollification))
+Face_field_engine<SparseSolver>::Face_field_engine(Indexed_mesh mesh, double mollification,
+                                                   std::vector<std::size_t> point_of_vertex)
+  : m_impl(new Impl(std::move(mesh), mollification, point_of_vertex))
 {
 }
 

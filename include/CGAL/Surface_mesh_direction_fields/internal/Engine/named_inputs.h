@@ -98,6 +98,21 @@ struct Mesh_indexing
     for(face_descriptor f : faces(mesh)) face_of_index[index_of_face(f)] = f;
     return indexed;
   }
+
+  // The named parameter `vertex_point_index_map` read into one number per
+  // vertex index (empty without it).
+  template <typename NamedParameters>
+  std::vector<std::size_t> point_of_vertex(const NamedParameters& np) const
+  {
+    std::vector<std::size_t> points;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_point_index_t>::value)
+    {
+      const auto map = parameters::get_parameter(np, internal_np::vertex_point_index);
+      points.resize(vertex_of_index.size());
+      for(std::size_t i = 0; i < points.size(); ++i) points[i] = static_cast<std::size_t>(get(map, vertex_of_index[i]));
+    }
+    return points;
+  }
 };
 
 inline void check_field_parameters(int degree, double s)
@@ -173,7 +188,8 @@ std::vector<int> prescribed_indices(const Range& prescription, std::size_t count
     const std::size_t i = index_of(entry.first);
     if(i >= count)
       throw Invalid_input_error("prescribed_singularities names " + element + " " + std::to_string(i) +
-                                ", but the mesh has " + std::to_string(count) + " " + element + "s");
+                                ", but the mesh has " + std::to_string(count) + " " +
+                                (element == "vertex" ? std::string("vertices") : element + "s"));
     if(listed[i]++)
       throw Invalid_input_error("prescribed_singularities lists " + element + " " + std::to_string(i) + " twice");
     k[i] = static_cast<int>(entry.second);

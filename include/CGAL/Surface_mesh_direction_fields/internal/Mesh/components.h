@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
 
 #include <cstddef>
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 // The connected components of the mesh (through shared vertices), each with
@@ -90,6 +92,51 @@ inline Components split_into_components(const Indexed_mesh& m)
   for(std::size_t f = 0; f < m.number_of_faces(); ++f)
     comps.list[comps.component_of_face[f]].faces.push_back(f);
   return comps;
+}
+
+// Components joined where two of their faces are coupled (the faces around a
+// non-manifold edge, each pair given once): they are then one problem. The
+// joined ones keep the order of their first part, vertices and faces in the
+// order of their parts.
+inline void join_components(Components& comps, const std::vector<std::pair<std::size_t, std::size_t> >& coupled)
+{
+  std::vector<std::size_t> root(comps.list.size());
+  for(std::size_t c = 0; c < root.size(); ++c) root[c] = c;
+  const auto find = [&](std::size_t c) {
+    while(root[c] != c) c = root[c] = root[root[c]];
+    return c;
+  };
+  bool joined = false;
+  for(const auto& fg : coupled)
+  {
+    const std::size_t a = find(comps.component_of_face[fg.first]), b = find(comps.component_of_face[fg.second]);
+    if(a == b) continue;
+    root[(std::max)(a, b)] = (std::min)(a, b);  // the smaller number stays
+    joined = true;
+  }
+  if(!joined) return;
+  std::vector<Component> list;
+  std::vector<std::size_t> new_number(root.size(), no_index);
+  for(std::size_t c = 0; c < root.size(); ++c)
+  {
+    const std::size_t r = find(c);
+    if(new_number[r] == no_index)
+    {
+      new_number[r] = list.size();
+      list.emplace_back();
+    }
+    Component& into = list[new_number[r]];
+    for(Compact_index v : comps.list[c].vertices)
+    {
+      comps.local_index[v] = into.vertices.size();
+      into.vertices.push_back(v);
+    }
+    into.faces.insert(into.faces.end(), comps.list[c].faces.begin(), comps.list[c].faces.end());
+  }
+  for(Component& c : list) std::sort(c.faces.begin(), c.faces.end());  // increasing, as split_into_components()
+  for(std::size_t f = 0; f < comps.component_of_face.size(); ++f)
+    comps.component_of_face[f] = new_number[find(comps.component_of_face[f])];
+  comps.list.swap(list);
 }
 
 } // namespace internal

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/matrix_types.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
@@ -23,10 +24,12 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/parallel.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 // The method on the dual mesh (user manual, section "Fields on Faces"): one
@@ -58,30 +61,118 @@ struct Dual_connection
 {
   std::vector<double> transport;  // 0 on the border
   std::vector<double> weight;     // 0 on the border
+  // Sides of faces that share a non-manifold edge (user manual, "Fields on
+  // Faces"): each pair once (corner < other), and a flag per corner.
+  struct Glued_pair
+  {
+    std::size_t corner, other;
+    double transport, weight;
+  };
+  std::vector<Glued_pair> glued;
+  std::vector<unsigned char> is_glued;
 };
 
 // The weight |e| / |e*| of the dual edge: the side's length over the distance
 // between the barycentres of its two faces laid out flat across it (the
 // diagonal Hodge star of the barycentric dual). It is positive for every pair
 // of faces with area, unlike the circumcentric dual's cotangent weights.
+// `other_at_a`: the corner of g at the side's first vertex a (for a twin,
+// (d + 1) % 3; for a glued side that runs the same way as the corner's, d).
 inline double dual_edge_weight(const Tangent_spaces& ts, const std::vector<Face_geometry>& geometry,
-                               std::size_t corner, std::size_t twin)
+                               std::size_t corner, std::size_t twin, int other_at_a)
 {
   const std::size_t f = corner / 3, g = twin / 3;
-  const int c = static_cast<int>(corner % 3), d = static_cast<int>(twin % 3);
+  const int c = static_cast<int>(corner % 3);
   const Face_geometry& gf = geometry[f];
   const Face_geometry& gg = geometry[g];
   const double length = std::sqrt(gf.squared_length[c]);
   // with the side a -> b of f along the x axis and its midpoint at 0, f's third vertex is at (x_f, h_f)
-  // and g's at (x_g, -h_g); the corner of g at a is (d+1) % 3, its sides a -> c_g then a -> b
+  // and g's at (x_g, -h_g); x_g from g's corner at a, whose sides are a -> c_g and a -> b
   const double x_f = gf.corner_dot[c] / length - 0.5 * length;
-  const double x_g = gg.corner_dot[(d + 1) % 3] / length - 0.5 * length;
+  const double x_g = gg.corner_dot[other_at_a] / length - 0.5 * length;
   const double h_f = 2. * ts.face_area[f] / length, h_g = 2. * ts.face_area[g] / length;
   const double dual_length = std::sqrt((x_f - x_g) * (x_f - x_g) + (h_f + h_g) * (h_f + h_g)) / 3.;
   return length / dual_length;
 }
 
-inline Dual_connection dual_connection(const Indexed_mesh& m, const Tangent_spaces& ts)
+// The sides around each non-manifold edge: all sides grouped by the points
+// of their two ends (`point_of_vertex`: vertices that are copies of one
+// point share it), the groups of three sides or more.
+inline std::vector<std::vector<std::size_t> > non_manifold_side_groups(const Indexed_mesh& m,
+                                                                       const std::vector<std::size_t>& point_of_vertex)
+{
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > keyed(3 * m.number_of_faces());
+  for(std::size_t corner = 0; corner < keyed.size(); ++corner)
+  {
+    const std::size_t a = point_of_vertex[m.vertex_of_corner(corner)];
+    const std::size_t b = point_of_vertex[m.vertex_of_corner(Indexed_mesh::next_corner(corner))];
+    keyed[corner] = {{(std::min)(a, b), (std::max)(a, b)}, corner};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::vector<std::size_t> > groups;
+  for(std::size_t i = 0, j = 0; i < keyed.size(); i = j)
+  {
+    for(j = i + 1; j < keyed.size() && keyed[j].first == keyed[i].first; ++j) {}
+    if(j - i < 3) continue;
+    groups.emplace_back();
+    for(std::size_t k = i; k < j; ++k) groups.back().push_back(keyed[k].second);
+  }
+  return groups;
+}
+
+// The faces around a non-manifold edge are coupled pairwise, each pair as
+// twins are: a direction at angle beta from the edge's direction (from its
+// first point to its second) in one face is at angle beta from it in the
+// other, each angle measured in its own face's frame (the face turned about
+// the edge until the normals agree). So that each face is held across the
+// edge as across a manifold one, every pair of the k faces there, twins
+// included, has the dual edge weight over k - 1.
+inline void glue_non_manifold_sides(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                    const std::vector<Face_geometry>& geometry,
+                                    const std::vector<std::size_t>& point_of_vertex, Dual_connection& dc)
+{
+  dc.is_glued.assign(3 * m.number_of_faces(), 0);
+  for(const std::vector<std::size_t>& group : non_manifold_side_groups(m, point_of_vertex))
+  {
+    const double share = 1. / static_cast<double>(group.size() - 1);
+    for(std::size_t i = 0; i < group.size(); ++i)
+      for(std::size_t j = i + 1; j < group.size(); ++j)
+      {
+        const std::size_t corner = (std::min)(group[i], group[j]), other = (std::max)(group[i], group[j]);
+        if(corner / 3 == other / 3) continue;  // a face folded onto itself has no transport to itself
+        if(m.twin_corner[corner] == other)
+        {
+          dc.weight[corner] *= share;
+          dc.weight[other] *= share;
+          continue;
+        }
+        const std::size_t a = point_of_vertex[m.vertex_of_corner(corner)];
+        const bool same_way = point_of_vertex[m.vertex_of_corner(other)] == a;
+        const double in_f = side_angle(ts, corner / 3, static_cast<int>(corner % 3));
+        const double in_g = side_angle(ts, other / 3, static_cast<int>(other % 3)) + (same_way ? 0. : CGAL_PI);
+        const int other_at_a = static_cast<int>(same_way ? other % 3 : (other + 1) % 3);
+        dc.glued.push_back({corner, other, reduce_angle(in_g - in_f),
+                            share * dual_edge_weight(ts, geometry, corner, other, other_at_a)});
+        dc.is_glued[corner] = dc.is_glued[other] = 1;
+      }
+  }
+}
+
+// Whether some vertex copies another's point: `point_of_vertex` neither
+// empty nor the identity (what a front end passes for a manifold mesh).
+inline bool copies_points(const Indexed_mesh& m, const std::vector<std::size_t>& point_of_vertex)
+{
+  if(point_of_vertex.empty()) return false;
+  if(point_of_vertex.size() != m.number_of_vertices())
+    throw Invalid_input_error("vertex_point_index_map must give a value for every vertex");
+  for(std::size_t v = 0; v < point_of_vertex.size(); ++v)
+    if(point_of_vertex[v] != v) return true;
+  return false;
+}
+
+// `point_of_vertex`: see copies_points().
+inline Dual_connection dual_connection(const Indexed_mesh& m, const Tangent_spaces& ts,
+                                       const std::vector<std::size_t>& point_of_vertex = {})
 {
   Dual_connection dc;
   dc.transport.assign(3 * m.number_of_faces(), 0.);
@@ -96,8 +187,10 @@ inline Dual_connection dual_connection(const Indexed_mesh& m, const Tangent_spac
     const double in_f = side_angle(ts, corner / 3, static_cast<int>(corner % 3));
     const double in_g = side_angle(ts, twin / 3, static_cast<int>(twin % 3)) + CGAL_PI;
     dc.transport[corner] = reduce_angle(in_g - in_f);
-    dc.weight[corner] = dual_edge_weight(ts, geometry, corner, twin);
+    dc.weight[corner] = dual_edge_weight(ts, geometry, corner, twin, static_cast<int>((twin + 1) % 3));
   });
+  if(copies_points(m, point_of_vertex)) glue_non_manifold_sides(m, ts, geometry, point_of_vertex, dc);
+  else dc.is_glued.assign(3 * m.number_of_faces(), 0);
   return dc;
 }
 
@@ -139,6 +232,19 @@ inline Energy_and_mass face_energy_and_mass(const Indexed_mesh& m, const Tangent
       energy.emplace_back(j, row, -w * std::polar(1., static_cast<double>(n) * dc.transport[corner]));
       mass.emplace_back(j, row, Complex(0., 0.));
     }
+  }
+  for(const Dual_connection::Glued_pair& glued : dc.glued)
+  {
+    if(local[glued.corner / 3] == no_index) continue;  // another component's
+    const Eigen::Index i = static_cast<Eigen::Index>(local[glued.corner / 3]);
+    const Eigen::Index j = static_cast<Eigen::Index>(local[glued.other / 3]);
+    const Complex r = std::polar(1., static_cast<double>(n) * glued.transport);
+    energy.emplace_back(i, i, Complex(glued.weight, 0.));
+    energy.emplace_back(j, j, Complex(glued.weight, 0.));
+    energy.emplace_back(j, i, -glued.weight * r);
+    energy.emplace_back(i, j, -glued.weight * std::conj(r));
+    mass.emplace_back(j, i, Complex(0., 0.));
+    mass.emplace_back(i, j, Complex(0., 0.));
   }
   Energy_and_mass em;
   em.energy.resize(nf, nf);
