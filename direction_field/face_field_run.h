@@ -23,6 +23,7 @@
 #include <functional>
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 #include <vector>
 
 namespace face_field_run {
@@ -90,9 +91,13 @@ struct Face_field
 template <typename Mesh>
 std::size_t non_manifold_edges(const Mesh& mesh, const std::vector<std::size_t>& points)
 {
+  // such an edge has an end at a point of several vertices (the repair's copies): only those sides count
+  std::unordered_map<std::size_t, int> vertices_at;
+  for(std::size_t point : points) ++vertices_at[point];
+  const auto copied = [&](std::size_t v) { return vertices_at[points[v]] > 1; };
   std::map<std::pair<std::size_t, std::size_t>, int> faces_at;
   for(auto h : mesh.halfedges())
-    if(!mesh.is_border(h))
+    if(!mesh.is_border(h) && (copied(mesh.source(h)) || copied(mesh.target(h))))
       ++faces_at[{(std::min)(points[mesh.source(h)], points[mesh.target(h)]),
                   (std::max)(points[mesh.source(h)], points[mesh.target(h)])}];
   std::size_t count = 0;

@@ -101,12 +101,21 @@ inline double dual_edge_weight(const Tangent_spaces& ts, const std::vector<Face_
 inline std::vector<std::vector<std::size_t> > non_manifold_side_groups(const Indexed_mesh& m,
                                                                        const std::vector<std::size_t>& point_of_vertex)
 {
-  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > keyed(3 * m.number_of_faces());
-  for(std::size_t corner = 0; corner < keyed.size(); ++corner)
+  // three sides or more between two points: one of the points has several vertices (a halfedge mesh has
+  // two faces at most on an edge), so the sides with no end at such a point are not sorted
+  std::vector<std::pair<std::size_t, std::size_t> > by_point(point_of_vertex.size());
+  for(std::size_t v = 0; v < by_point.size(); ++v) by_point[v] = {point_of_vertex[v], v};
+  std::sort(by_point.begin(), by_point.end());
+  std::vector<unsigned char> shared(point_of_vertex.size(), 0);
+  for(std::size_t i = 1; i < by_point.size(); ++i)
+    if(by_point[i].first == by_point[i - 1].first) shared[by_point[i].second] = shared[by_point[i - 1].second] = 1;
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > keyed;
+  for(std::size_t corner = 0; corner < 3 * m.number_of_faces(); ++corner)
   {
-    const std::size_t a = point_of_vertex[m.vertex_of_corner(corner)];
-    const std::size_t b = point_of_vertex[m.vertex_of_corner(Indexed_mesh::next_corner(corner))];
-    keyed[corner] = {{(std::min)(a, b), (std::max)(a, b)}, corner};
+    const std::size_t u = m.vertex_of_corner(corner), w = m.vertex_of_corner(Indexed_mesh::next_corner(corner));
+    if(!shared[u] && !shared[w]) continue;
+    const std::size_t a = point_of_vertex[u], b = point_of_vertex[w];
+    keyed.push_back({{(std::min)(a, b), (std::max)(a, b)}, corner});
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<std::vector<std::size_t> > groups;
