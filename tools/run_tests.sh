@@ -6,14 +6,16 @@
 # sources are built against it and the tests that depend on CGAL run there
 # too: the library tests, the examples, the viewer, the Python module, the
 # find_package consumer, and the program's files compared byte for byte with
-# the first build's (the program's own file-handling tests, the tests that
-# call nothing of CGAL and the tests of build variants, assertions on and two
-# default solvers in one program, run once, in the first build).
+# the first build's (the program's own file-handling tests, the tests whose
+# subject does not depend on CGAL's version, the tests of build variants,
+# assertions on and two default solvers in one program, run once, in the
+# first build). The benchmark programs that only measure are not built.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh tests
 jobs=$(nproc)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSMDF_BUILD_TESTS=ON -DSMDF_BUILD_BENCHMARKS=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSMDF_BUILD_TESTS=ON -DSMDF_BUILD_BENCHMARKS=ON \
+      -DSMDF_BENCHMARKS_TESTED_ONLY=ON
 cmake --build build -j "$jobs"
 (cd build && ctest --output-on-failure -j "$jobs")
 

@@ -9,6 +9,12 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields.h>
+// the package's own assembly, compared (the field comes from the compiled engine)
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/indexed_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/tangent_spaces.h>
 
 #include "test_types.h"
 #include "generated_meshes.h"
