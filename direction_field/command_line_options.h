@@ -110,8 +110,8 @@ inline const Option_help option_help[] = {
                                         "default 0: none removed)"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
                                 "follow the principal curvature directions (even n)"},
-  {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH (length = weight, zero = "
-                                   "no preference)"},
+  {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH, or per point of a "
+                                   "point set (length = weight, zero = no preference)"},
   {"Alignment", "--lambda L", "the lambda_t of (A - lambda_t M) u = M q (default: chosen by the library)"},
   {"Alignment", "--alignment-weight T", "or the alignment weight t in (0, 1) (lambda_t from lambda_1)"},
   {"Alignment", "--constrain-boundary HOW", "tangent or normal: one direction fixed along the boundary"},

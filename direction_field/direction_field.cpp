@@ -21,6 +21,7 @@
 #include "command_line_options.h"
 #include "exchange_files.h"
 #include "face_field_run.h"
+#include "guidance_file.h"
 #include "file_io/optional_named_parameters.h"
 #include "huge_pages_rerun.h"
 #include "process_start.h"
@@ -83,39 +84,18 @@ struct Computed_field
   SMDF::Direction_field_result result;
 };
 
-// The text of an input file other than the mesh (folders, devices and pipes
-// nobody writes refused as the mesh reader refuses them), without a UTF-8
-// byte order mark.
-std::string text_file(const std::string& path, const char* what)
-{
-  std::string text = soup_reading::read_whole_file(path, what);
-  if(text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
-  return text;
-}
-
 // --guidance: one vector per vertex of the file, carried to the mesh's
 // vertices (copies included).
 std::vector<Vector_3> read_guidance(const Options& o, const Repaired_mesh<Mesh>& input)
 {
+  const std::vector<std::array<double, 3> > file_guidance =
+    read_guidance_file(o.guidance, input.file_vertices, "vertices");
   std::vector<Vector_3> guidance(input.mesh.number_of_vertices(), CGAL::NULL_VECTOR);
-  std::istringstream in(text_file(o.guidance, "a guidance file"));
-  std::vector<Vector_3> file_guidance;
-  std::string line;
-  while(std::getline(in, line))
-  {
-    if(line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream is(line);
-    double x, y, z;
-    if(!(is >> x >> y >> z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      throw Usage_error("line " + std::to_string(file_guidance.size() + 1) + " of '" + o.guidance +
-                        "' is not three finite numbers");
-    file_guidance.emplace_back(x, y, z);
-  }
-  if(file_guidance.size() != input.file_vertices)
-    throw Usage_error("'" + o.guidance + "' has " + std::to_string(file_guidance.size()) + " vectors for " +
-                      std::to_string(input.file_vertices) + " vertices");
   for(Vertex_index v : input.mesh.vertices())
-    guidance[std::size_t(v)] = file_guidance[input.file_vertex_of_vertex[std::size_t(v)]];
+  {
+    const std::array<double, 3>& g = file_guidance[input.file_vertex_of_vertex[std::size_t(v)]];
+    guidance[std::size_t(v)] = Vector_3(g[0], g[1], g[2]);
+  }
   return guidance;
 }
 
@@ -528,9 +508,6 @@ std::vector<std::size_t> points_of_vertices(const Options& o, const Repaired_mes
   const bool glue = input.report.duplicated_vertices > 0 && o.non_manifold == "glue";
   std::vector<std::size_t> points(input.mesh.number_of_vertices());
   for(std::size_t v = 0; v < points.size(); ++v) points[v] = glue ? input.file_vertex_of_vertex[v] : v;
-  if(glue && (!o.prescribe.empty() || o.cancel_singularities > 0.) && face_field_run::non_manifold_edges(input.mesh, points) > 0)
-    throw Usage_error(std::string(o.prescribe.empty() ? "--cancel-singularities" : "--prescribe") +
-                      " on a mesh with non-manifold edges needs --non-manifold cut");
   return points;
 }
 
@@ -551,6 +528,9 @@ int run_on_faces(const Options& o, const Repaired_mesh<Mesh>& input, Progress& p
   }
   catch(const SMDF::Invalid_input_error& e)
   {
+    if(std::string(e.what()).find("non-manifold edges are glued") != std::string::npos)  // the library's refusal
+      throw Usage_error(std::string(o.prescribe.empty() ? "--cancel-singularities" : "--prescribe") +
+                        " on a mesh with non-manifold edges needs --non-manifold cut");
     throw Usage_error(in_file_numbering(e, input));
   }
   progress.end();

@@ -22,8 +22,6 @@
 #include <utility>
 #include <functional>
 #include <algorithm>
-#include <map>
-#include <unordered_map>
 #include <vector>
 
 namespace face_field_run {
@@ -82,29 +80,9 @@ struct Face_field
   std::vector<std::array<std::size_t, 2> > features;  // of --feature-angle, detected once for the field and --sharp
   SMDF::Face_direction_field_result result;
   SMDF::Direction_field_data data;
-  std::size_t glued_edges = 0;  // non-manifold edges whose faces share the field
 };
 
 // The library call with the options' named parameters; the matching per face side.
-// The edges between two points (`points`: the point each vertex copies)
-// that three faces or more share.
-template <typename Mesh>
-std::size_t non_manifold_edges(const Mesh& mesh, const std::vector<std::size_t>& points)
-{
-  // such an edge has an end at a point of several vertices (the repair's copies): only those sides count
-  std::unordered_map<std::size_t, int> vertices_at;
-  for(std::size_t point : points) ++vertices_at[point];
-  const auto copied = [&](std::size_t v) { return vertices_at[points[v]] > 1; };
-  std::map<std::pair<std::size_t, std::size_t>, int> faces_at;
-  for(auto h : mesh.halfedges())
-    if(!mesh.is_border(h) && (copied(mesh.source(h)) || copied(mesh.target(h))))
-      ++faces_at[{(std::min)(points[mesh.source(h)], points[mesh.target(h)]),
-                  (std::max)(points[mesh.source(h)], points[mesh.target(h)])}];
-  std::size_t count = 0;
-  for(const auto& edge : faces_at) count += edge.second > 2;
-  return count;
-}
-
 // `point_of_vertex`: the point each vertex copies (the file's vertex where
 // non-manifold edges are glued, else the vertex itself).
 template <typename Mesh>
@@ -114,9 +92,6 @@ Face_field compute(const Options& o, const Mesh& mesh, const std::vector<std::si
 {
   typedef typename Mesh::Vertex_index Vertex_index;
   Face_field field;
-  if(point_of_vertex.size() == mesh.number_of_vertices())
-    for(std::size_t v = 0; v < point_of_vertex.size() && field.glued_edges == 0; ++v)
-      if(point_of_vertex[v] != v) field.glued_edges = non_manifold_edges(mesh, point_of_vertex);
   std::vector<unsigned char> is_feature;
   field.features = feature_edges(o, mesh, is_feature);
   std::vector<typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3> directions(mesh.number_of_faces());
@@ -241,7 +216,7 @@ void write_json(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>& i
      << ",\"singular_vertices_multiple_of_n\":" << hidden_modulo_n(field.data)
      << ",\"prescribed\":" << (r.prescribed ? "true" : "false")
      << ",\"non_principal_jumps\":" << r.number_of_non_principal_jumps
-     << ",\"cancelled_pairs\":" << r.number_of_cancelled_pairs << ",\"glued_edges\":" << field.glued_edges
+     << ",\"cancelled_pairs\":" << r.number_of_cancelled_pairs << ",\"glued_edges\":" << r.number_of_glued_edges
      << ",\"outputs_left_out\":[";
   const auto left_out = outputs.left_out();
   for(std::size_t i = 0; i < left_out.size(); ++i) os << (i ? "," : "") << "\"" << left_out[i].first << "\"";
@@ -262,8 +237,8 @@ void write_summary(std::ostream& os, const Options& o, const Repaired_mesh<Mesh>
      << " faces, " << r.components.size() << " component(s)\n"
      << "field           on faces, degree n = " << r.degree << "\n";
   if(input.report.any()) os << "repairs         " << input.report.summary() << "\n";
-  if(field.glued_edges > 0)
-    os << "glued           " << field.glued_edges << " non-manifold edges: their faces share the field "
+  if(r.number_of_glued_edges > 0)
+    os << "glued           " << r.number_of_glued_edges << " non-manifold edges: their faces share the field "
        << "(--non-manifold cut keeps the pieces apart)\n";
   for(std::size_t i = 0; i < r.components.size() && i < 10; ++i)
   {

@@ -7,6 +7,7 @@
 #include "command_line_options.h"
 #include "file_io/output_files.h"
 #include "file_io/read_polygon_soup.h"
+#include "guidance_file.h"
 #include "png_snapshot.h"
 #include "progress.h"
 #include "reports.h"
@@ -115,8 +116,7 @@ inline void check_point_set_options(const Options& o)
 {
   if(o.on != "vertices") throw Usage_error("--on faces applies to meshes: a point set has its field on its points");
   const std::pair<const char*, bool> refused[] = {
-    {"--align", o.align != "none"}, {"--guidance", !o.guidance.empty()}, {"--lambda", o.lambda_given},
-    {"--alignment-weight", o.weight_given}, {"--constrain-boundary", o.constrain_boundary != "none"},
+    {"--align", o.align != "none"}, {"--constrain-boundary", o.constrain_boundary != "none"},
     {"--feature-angle", o.feature_angle > 0.}, {"--prescribe", !o.prescribe.empty()},
     {"--eigenvalue-bound", o.eigenvalue_bound}, {"--solver", o.solver != "default"},
     {"--singularities", !o.singularities.empty()}, {"--vtk-singularities", !o.vtk_singularities.empty()},
@@ -148,21 +148,39 @@ struct Point_field
   double compute_ms = 0.;
 };
 
+// The library's call with the named parameters `np` and those of --guidance,
+// --lambda and --alignment-weight.
+template <typename NamedParameters>
+SMDF::Point_set_direction_field_result guided_call(const Options& o, const Point_set& points,
+                                                   const NamedParameters& np,
+                                                   const std::vector<Kernel::Vector_3>& guidance,
+                                                   const Direction_map& direction_map)
+{
+  if(guidance.empty()) return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, np);
+  const auto guided = np.point_guidance_map(CGAL::make_property_map(guidance));
+  if(o.lambda_given)
+    return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, guided.alignment_lambda(o.lambda));
+  if(o.weight_given)
+    return SMDF::compute_globally_optimal_point_set_directions(points, direction_map,
+                                                               guided.alignment_weight(o.weight));
+  return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, guided);
+}
+
 inline Point_field compute(const Options& o, const Point_set& points)
 {
   Point_field field;
-  std::vector<Kernel::Vector_3> directions(points.size());
+  std::vector<Kernel::Vector_3> directions(points.size()), guidance;
+  if(!o.guidance.empty())
+    for(const auto& g : read_guidance_file(o.guidance, points.size(), "points")) guidance.emplace_back(g[0], g[1], g[2]);
   const Direction_map direction_map{&directions};
   auto np = CGAL::parameters::point_map(points.point_map())
               .degree(o.degree)
               .smoothness_parameter(o.s)
               .number_of_neighbors(o.neighbors)
               .residual_tolerance(o.tolerance);
-  if(points.has_normal_map())
-    field.result = SMDF::compute_globally_optimal_point_set_directions(points, direction_map,
-                                                                       np.normal_map(points.normal_map()));
-  else
-    field.result = SMDF::compute_globally_optimal_point_set_directions(points, direction_map, np);
+  field.result = points.has_normal_map()
+                   ? guided_call(o, points, np.normal_map(points.normal_map()), guidance, direction_map)
+                   : guided_call(o, points, np, guidance, direction_map);
   field.directions = directions;
   for(Point_set::Index i : points) field.points.push_back(points.point(i));
   return field;
@@ -276,13 +294,15 @@ inline void write_json(std::ostream& os, const Options& o, const Point_field& f,
                        const Program_timings& timings)
 {
   const SMDF::Point_set_direction_field_result& r = f.result;
-  // the eigenvalue of the largest component; the worst residual and convergence of all
-  double eigenvalue = 0., residual = 0.;
+  // the eigenvalue, lambda_t and t of the largest component (null: not computed, with --guidance); the
+  // worst residual and convergence of all
+  SMDF::Component_report main;
+  double residual = 0.;
   std::size_t iterations = 0, largest = 0;
   bool converged = true;
   for(const auto& c : r.components)
   {
-    if(c.number_of_vertices > largest) { largest = c.number_of_vertices; eigenvalue = c.eigenvalue.value_or(0.); }
+    if(c.number_of_vertices > largest) { largest = c.number_of_vertices; main = c; }
     residual = (std::max)(residual, c.residual);
     iterations = (std::max)(iterations, c.iterations);
     converged = converged && c.converged;
@@ -290,7 +310,8 @@ inline void write_json(std::ostream& os, const Options& o, const Point_field& f,
   os << "{\"mesh\":\"" << json_escape(o.mesh) << "\",\"input\":\"point_set\",\"points\":" << f.points.size()
      << ",\"degree\":" << o.degree << ",\"s\":" << number(o.s) << ",\"neighbors\":" << o.neighbors
      << ",\"normals\":\"" << (r.normals_estimated ? "estimated" : "given") << "\",\"triangles\":" << r.triangles.size()
-     << ",\"components\":" << r.components.size() << ",\"eigenvalue\":" << number(eigenvalue)
+     << ",\"components\":" << r.components.size() << ",\"eigenvalue\":" << number(main.eigenvalue)
+     << ",\"lambda_t\":" << number(main.lambda) << ",\"alignment_weight\":" << number(main.alignment_weight)
      << ",\"residual\":" << number(residual) << ",\"iterations\":" << iterations
      << ",\"converged\":" << (converged ? "true" : "false") << ",\"singular_triangles\":" << r.singular_triangles.size()
      << ",\"index_sum\":" << index_sum(r) << ",\"surface_euler_characteristic\":" << r.surface_euler_characteristic
@@ -310,9 +331,8 @@ inline void write_summary(std::ostream& os, const Options& o, const Point_field&
      << "), " << r.triangles.size() << " triangles from the local triangulations of " << o.neighbors << " neighbours, "
      << r.components.size() << " component" << (r.components.size() == 1 ? "" : "s") << "\n";
   for(std::size_t c = 0; c < r.components.size() && c < 5; ++c)
-    os << "  component " << c << ": " << r.components[c].number_of_vertices << " points, eigenvalue "
-       << compact(r.components[c].eigenvalue.value_or(0.)) << ", " << r.components[c].iterations << " iterations, residual "
-       << compact(r.components[c].residual) << "\n";
+    os << "  component " << c << ": " << r.components[c].number_of_vertices << " points, "
+       << describe_solve(r.components[c]) << "\n";
   os << "degree " << o.degree << ": " << r.singular_triangles.size() << " singular triangles, index sum "
      << index_sum(r) << "/" << o.degree;
   if(r.surface_is_closed)

@@ -305,6 +305,8 @@ void bind_face_field(py::module_& m)
     .def_property_readonly("cancelled_pairs",
                            [](const Face_field_result& r) { return r.report.number_of_cancelled_pairs; },
                            "pairs of opposite singular vertices removed by singularity_cancellation_radius")
+    .def_property_readonly("glued_edges", [](const Face_field_result& r) { return r.report.number_of_glued_edges; },
+                           "non-manifold edges across which the faces share the field (vertex_point_index)")
     .def(py::pickle(
       [](const Face_field_result& r) {
         return py::make_tuple(r.face_directions, r.pd2, r.singular_vertices, r.matching, r.mismatch,

@@ -205,7 +205,7 @@ py::tuple face_report_state(const SMDF::Face_direction_field_result& report)
   return py::make_tuple(report.degree, components, report.index_sum, report.number_of_singular_vertices,
                         report.iterations, report.residual, report.converged, report.mollification,
                         report.prescribed, report.number_of_non_principal_jumps, timings_state(report.timings),
-                        report.number_of_cancelled_pairs);
+                        report.number_of_cancelled_pairs, report.number_of_glued_edges);
 }
 
 SMDF::Face_direction_field_result face_report_from(const py::tuple& state)
@@ -224,6 +224,7 @@ SMDF::Face_direction_field_result face_report_from(const py::tuple& state)
   report.number_of_non_principal_jumps = r.next<std::size_t>();
   report.timings = timings_from(r.next<py::tuple>());
   report.number_of_cancelled_pairs = state.size() > 11 ? r.next<std::size_t>() : 0;  // earlier pickles: none
+  report.number_of_glued_edges = state.size() > 12 ? r.next<std::size_t>() : 0;
   return report;
 }
 

@@ -11,6 +11,8 @@
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_point_set_directions.h>
 
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace {
@@ -31,9 +33,11 @@ struct Point_set_options
   double s = 0.;
   unsigned int neighbors = SMDF::default_number_of_neighbors;
   double tolerance = 1e-10;
+  std::optional<double> lambda_t, alignment_weight;
 };
 
-const char* const point_set_option_names[] = {"normals", "degree", "s", "neighbors", "tolerance"};
+const char* const point_set_option_names[] = {"normals", "degree",           "s",       "neighbors",
+                                              "tolerance", "guidance", "lambda_t", "alignment_weight"};
 
 Point_set_options read_point_set_options(const py::dict& kw)
 {
@@ -49,7 +53,40 @@ Point_set_options read_point_set_options(const py::dict& kw)
   if(kw.contains("s")) o.s = option_as<double>(kw["s"], "s", "a number");
   if(kw.contains("neighbors")) o.neighbors = count_option(kw["neighbors"], "neighbors");
   if(kw.contains("tolerance")) o.tolerance = option_as<double>(kw["tolerance"], "tolerance", "a number");
+  if(kw.contains("lambda_t") && !kw["lambda_t"].is_none())
+    o.lambda_t = option_as<double>(kw["lambda_t"], "lambda_t", "a number");
+  if(kw.contains("alignment_weight") && !kw["alignment_weight"].is_none())
+    o.alignment_weight = option_as<double>(kw["alignment_weight"], "alignment_weight", "a number");
   return o;
+}
+
+std::vector<Kernel::Vector_3> vector_rows(const py::dict& kw, const char* name, std::size_t count)
+{
+  std::vector<Kernel::Vector_3> vectors;
+  if(!kw.contains(name) || kw[name].is_none()) return vectors;
+  const Float_array a = rows_of_three(kw[name], count, name);
+  const auto r = a.unchecked<2>();
+  for(py::ssize_t i = 0; i < a.shape(0); ++i) vectors.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+  return vectors;
+}
+
+// The library's call with the named parameters `np` and those of the guidance
+// options given (each a type of its own: one instantiation per combination).
+template <typename NamedParameters>
+SMDF::Point_set_direction_field_result guided_call(const std::vector<std::size_t>& ids, const NamedParameters& np,
+                                                   const Point_set_options& o,
+                                                   const std::vector<Kernel::Vector_3>& guidance,
+                                                   std::vector<Kernel::Vector_3>& directions)
+{
+  const auto direction_map = CGAL::make_property_map(directions);
+  if(guidance.empty()) return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, np);
+  const auto guided = np.point_guidance_map(CGAL::make_property_map(guidance));
+  if(o.lambda_t)
+    return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, guided.alignment_lambda(*o.lambda_t));
+  if(o.alignment_weight)
+    return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map,
+                                                               guided.alignment_weight(*o.alignment_weight));
+  return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, guided);
 }
 
 template <typename T>
@@ -113,13 +150,11 @@ Point_set_field compute_point_set_directions(const py::object& P, const py::kwar
 {
   const std::vector<Kernel::Point_3> points = point_rows(P);
   const Point_set_options o = read_point_set_options(kw);
-  std::vector<Kernel::Vector_3> normals;
-  if(kw.contains("normals") && !kw["normals"].is_none())
-  {
-    const Float_array a = rows_of_three(kw["normals"], points.size(), "normals");
-    const auto r = a.unchecked<2>();
-    for(py::ssize_t i = 0; i < a.shape(0); ++i) normals.emplace_back(r(i, 0), r(i, 1), r(i, 2));
-  }
+  const std::vector<Kernel::Vector_3> normals = vector_rows(kw, "normals", points.size());
+  const std::vector<Kernel::Vector_3> guidance = vector_rows(kw, "guidance", points.size());
+  if((o.lambda_t || o.alignment_weight) && guidance.empty())
+    refuse(std::string(o.lambda_t ? "lambda_t" : "alignment_weight") + " needs a guidance");
+  if(o.lambda_t && o.alignment_weight) refuse("give either lambda_t or alignment_weight, not both");
   std::vector<std::size_t> ids(points.size());
   for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
   std::vector<Kernel::Vector_3> directions(points.size(), CGAL::NULL_VECTOR);
@@ -132,22 +167,22 @@ Point_set_field compute_point_set_directions(const py::object& P, const py::kwar
                       .smoothness_parameter(o.s)
                       .number_of_neighbors(o.neighbors)
                       .residual_tolerance(o.tolerance);
-    const auto direction_map = CGAL::make_property_map(directions);
-    if(normals.empty())
-      r.report = SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, np);
-    else
-      r.report = SMDF::compute_globally_optimal_point_set_directions(ids, direction_map,
-                                                                     np.normal_map(CGAL::make_property_map(normals)));
+    r.report = normals.empty() ? guided_call(ids, np, o, guidance, directions)
+                               : guided_call(ids, np.normal_map(CGAL::make_property_map(normals)), o, guidance,
+                                             directions);
   }
   fill_point_set_arrays(directions, r);
   return r;
 }
 
 const char* const point_set_doc =
-  "compute_point_set_directions(P, /, *, normals=None, degree=4, s=0.0, neighbors=12, tolerance=1e-10)\n\n"
+  "compute_point_set_directions(P, /, *, normals=None, degree=4, s=0.0, neighbors=12, tolerance=1e-10,\n"
+  "                             guidance=None, lambda_t=None, alignment_weight=None)\n\n"
   "The smoothest n-direction field of the points P (N, 3), without a mesh (user manual, 'Point Sets'): each\n"
   "point's `neighbors` nearest points are triangulated in its tangent plane (normals (N, 3) when given,\n"
-  "estimated by jet fitting otherwise) and the mesh method runs on these local triangulations. Returns a\n"
+  "estimated by jet fitting otherwise) and the mesh method runs on these local triangulations. With\n"
+  "guidance (N, 3: a vector per point, its length its weight), the aligned field, as on a mesh (lambda_t or\n"
+  "alignment_weight as in compute_directions). Returns a\n"
   "PointSetField: directions (N, 3; zero for a point in no triangle), normals, magnitudes (N,; 1 at the\n"
   "largest), triangles (T, 3) with holders (T,: how many of their points' triangulations hold them) and\n"
   "on_surface (T,: the triangles the singularities are read on), singular_triangles (k, 2: triangle, k; the\n"
@@ -241,6 +276,11 @@ void bind_point_set_field(py::module_& m)
       for(const auto& c : r.report.components) all = all && c.converged;
       return all;
     })
+    .def_property_readonly("alignment_weights", [](const Point_set_field& r) {
+      std::vector<double> values;
+      for(const auto& c : r.report.components) values.push_back(c.alignment_weight);
+      return values;
+    }, "per component, the alignment weight t = 1 / (1 + |u|_M) reached (0 without guidance)")
     .def(py::pickle(&point_set_state, &point_set_from))
     .def("__repr__", [](const Point_set_field& r) {
       return "<PointSetField n=" + std::to_string(r.degree) + ", " + std::to_string(r.directions.shape(0)) +

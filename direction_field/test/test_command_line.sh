@@ -717,6 +717,34 @@ import json, sys
 d = json.load(open(sys.argv[1]))
 assert d["points"] == 1000 and d["neighbors"] == 16 and d["index_sum"] == 8 and d["normals"] == "estimated", d
 EOF
+# --guidance on a point set: one vector per point (here along the parallels), followed with weight 0.9
+python3 -c "
+import math
+golden = math.pi * (3 - 5 ** 0.5)
+for i in range(1000):
+    z = 1 - (2 * i + 1) / 1000; r = math.sqrt(1 - z * z)
+    print(-r * math.sin(golden * i), r * math.cos(golden * i), 0)" > "$out/sphere_guide.txt"
+"$bin" "$out/sphere_n.xyz" --guidance "$out/sphere_guide.txt" --alignment-weight 0.9 --json \
+  --directions "$out/sphere_guided_dir.txt" > "$out/sphere_guided.json"
+check "point set with --guidance and --alignment-weight: the weight reached, the parallels followed" \
+      python_checks "$out/sphere_guided.json" "$out/sphere_guided_dir.txt" "$out/sphere_guide.txt" <<'EOF'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+assert abs(d["alignment_weight"] - 0.9) < 1e-3 and d["eigenvalue"] is not None and d["lambda_t"] < d["eigenvalue"], d
+dirs = [list(map(float, l.split())) for l in open(sys.argv[2])]
+guide = [list(map(float, l.split())) for l in open(sys.argv[3])]
+near = counted = 0
+for v, w in zip(dirs, guide):
+    if sum(a * a for a in w) > 0.25:  # a cross: the direction or its quarter turn along w
+        counted += 1
+        c = abs(sum(a * b for a, b in zip(v, w))) / math.sqrt(sum(a * a for a in w))
+        near += max(c, math.sqrt(max(0., 1 - c * c))) > math.cos(math.radians(5))
+assert near >= 0.95 * counted, (near, counted)
+EOF
+"$bin" "$out/sphere_n.xyz" --guidance "$out/two.xyz" --directions "$out/refused_dir.txt" > /dev/null 2> "$out/refused.err"
+status=$?
+check "point set with a guidance file of the wrong length: exit 1, one line ($(cat "$out/refused.err"))" \
+      test $status -eq 1 -a "$(wc -l < "$out/refused.err")" -eq 1 -a ! -e "$out/refused_dir.txt"
 for refused in "--on faces" "--feature-angle 30" "--align curvature" "--rosy $out/p.rosy" "--vtk $out/p.vtu" \
                "--neighbors 2" "--streamlines $out/p.txt"; do
   # shellcheck disable=SC2086

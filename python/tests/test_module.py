@@ -233,6 +233,7 @@ def test_face_field_on_a_non_manifold_mesh_kept_whole():
     glued = smdf.compute_face_directions(V2, F2, vertex_point_index=repaired.maps["file_vertex_of_vertex"])
     cut = smdf.compute_face_directions(V2, F2)
     assert len(glued.eigenvalues) == 1 and len(cut.eigenvalues) == 2 and abs(glued.eigenvalues[0]) < 1e-10
+    assert glued.glued_edges == 2 and cut.glued_edges == 0
     assert glued.index_sum + sum(glued.boundary_indices) == 4 * sum(glued.euler_characteristics)
     # the fin's field is the cube's, turned about the edge: its directions lie along the axes as the cube's do
     axis_aligned = np.abs(glued.face_directions).max(axis=1)

@@ -643,7 +643,7 @@ std::vector<double> glued_differences(const Glued_mesh& g, const Face_field& fie
 // A fin (a 2 x 2 square standing on the top of a cube) and two cubes sharing an edge: every face is flat
 // and every edge along an axis, so the glued cross field is parallel (eigenvalue 0, no turn across any
 // pair of faces on a non-manifold edge) and one component; cut, each piece is a field of its own.
-void check_glued_cubes(const std::string& what, const Soup& soup, std::size_t pieces)
+void check_glued_cubes(const std::string& what, const Soup& soup, std::size_t pieces, std::size_t edges)
 {
   const Glued_mesh g = cut_into_mesh(soup);
   const auto point_map = CGAL::make_property_map(g.point_of_vertex);
@@ -652,6 +652,9 @@ void check_glued_cubes(const std::string& what, const Soup& soup, std::size_t pi
   report.check(glued.result.components.size() == 1 && cut.result.components.size() == pieces,
                what + ": one component glued (" + std::to_string(glued.result.components.size()) + "), " +
                  std::to_string(pieces) + " cut (" + std::to_string(cut.result.components.size()) + ")");
+  report.check(glued.result.number_of_glued_edges == edges && cut.result.number_of_glued_edges == 0,
+               what + ": " + std::to_string(edges) + " glued edges (" +
+                 std::to_string(glued.result.number_of_glued_edges) + ")");
   report.check(std::abs(glued.result.components[0].eigenvalue.value_or(1.)) < 1e-10, what + ": eigenvalue 0");
   double worst = 0.;
   for(double d : glued_differences(g, glued, 4)) worst = (std::max)(worst, std::abs(d));
@@ -671,11 +674,11 @@ void check_non_manifold_meshes()
       fin.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       fin.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
-  check_glued_cubes("a fin on a cube", fin, 2);
+  check_glued_cubes("a fin on a cube", fin, 2, 2);
   Soup two;
   two.add_cube(0, 0, 0, 3);
   two.add_cube(1, 1, 0, 3);
-  check_glued_cubes("two cubes sharing an edge", two, 2);
+  check_glued_cubes("two cubes sharing an edge", two, 2, 3);
 
   // Two cubes sharing a vertex: no non-manifold edge, nothing glued; the same field with or without the map.
   Soup bowtie;
@@ -685,7 +688,8 @@ void check_non_manifold_meshes()
   const Face_field with =
     face_field(b.mesh, params::degree(4).vertex_point_index_map(CGAL::make_property_map(b.point_of_vertex)));
   const Face_field without = face_field(b.mesh, params::degree(4));
-  report.check(with.directions == without.directions && with.result.components.size() == 2,
+  report.check(with.directions == without.directions && with.result.components.size() == 2 &&
+                 with.result.number_of_glued_edges == 0,
                "two cubes sharing a vertex: two fields, the map changes nothing");
 
   // A curved surface with fins: an icosphere with a triangle standing on 6 of its edges. Each fin follows
@@ -710,7 +714,8 @@ void check_non_manifold_meshes()
   const Glued_mesh g = cut_into_mesh(fins);
   const Face_field glued =
     face_field(g.mesh, params::degree(4).vertex_point_index_map(CGAL::make_property_map(g.point_of_vertex)));
-  report.check(glued.result.components.size() == 1, "a sphere with fins: one component glued");
+  report.check(glued.result.components.size() == 1 && glued.result.number_of_glued_edges == 6,
+               "a sphere with fins: one component, six edges glued");
   check_poincare_hopf(glued, 4, "a sphere with fins, glued");
   const std::vector<double> d = glued_differences(g, glued, 4);  // per fin: sphere-sphere, sphere-fin, sphere-fin
   bool between = d.size() == 18;

@@ -216,6 +216,79 @@ void test_invariance()
     report.check(field.result.singular_triangles == original.result.singular_triangles,
                  "rotated, moved and scaled: the same singular triangles");
   }
+  // beyond 2^100 the coordinates are scaled for the arithmetic: the eigenvalue is still the user's, 1 / R^2
+  Point_set huge(true);
+  for(auto i : sphere) huge.insert(CGAL::ORIGIN + 1e40 * (sphere.point(i) - CGAL::ORIGIN), sphere.normal(i));
+  const double lambda = original.result.components[0].eigenvalue.value();
+  const double huge_lambda = cloud_field(huge, 4).result.components[0].eigenvalue.value();
+  report.check(std::abs(huge_lambda * 1e80 - lambda) < 1e-8 * lambda,
+               "scaled by 1e40: the eigenvalue scaled by 1e-80 (" + std::to_string(huge_lambda * 1e80) + ")");
+}
+
+// The angle, modulo 2 pi / n, from direction d to the tangent part of w at a point of normal `normal`.
+double angle_to(const Vector_3& d, const Vector_3& w, const Vector_3& normal, int n)
+{
+  const Vector_3 t = w - (w * normal) * normal;
+  return std::abs(std::remainder(n * std::atan2(CGAL::cross_product(d, t) * normal, d * t), 2. * CGAL_PI)) / n;
+}
+
+// A guidance vector per point gives the aligned field, as on a mesh.
+void test_guidance()
+{
+  // a flat patch: the smoothest field is parallel, so a constant guidance is followed exactly
+  Point_set plane(true);
+  for(int i = 0; i < 30; ++i)
+    for(int j = 0; j < 30; ++j)
+      plane.insert(Point_3(i + 0.3 * std::sin(7. * j), j + 0.2 * std::cos(3. * i), 0.), Vector_3(0, 0, 1));
+  auto guidance = plane.add_property_map<Vector_3>("guidance", Vector_3(0, 0, 0)).first;
+  auto directions = plane.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+  for(auto i : plane) guidance[i] = Vector_3(std::cos(0.3), std::sin(0.3), 0.4);  // its tangent part counts
+  const auto flat = SMDF::compute_globally_optimal_point_set_directions(
+    plane, directions, plane.parameters().degree(4).point_guidance_map(guidance));
+  double worst = 0.;
+  for(auto i : plane) worst = (std::max)(worst, angle_to(directions[i], guidance[i], Vector_3(0, 0, 1), 4));
+  report.check(worst < 1e-8 && flat.components.size() == 1 &&
+                 flat.components[0].solve == SMDF::Field_solve::LINEAR_SOLVE,
+               "a plane with a constant guidance: a linear solve, the guidance's directions (" +
+                 std::to_string(worst) + ")");
+
+  // a sphere guided along its parallels with weight 0.9: the field follows them away from the poles
+  Point_set sphere = fibonacci_sphere(2000);
+  auto along = sphere.add_property_map<Vector_3>("guidance", Vector_3(0, 0, 0)).first;
+  auto field = sphere.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+  for(auto i : sphere) along[i] = Vector_3(-sphere.point(i).y(), sphere.point(i).x(), 0.);
+  const auto np = sphere.parameters().degree(4).point_guidance_map(along);
+  const auto guided = SMDF::compute_globally_optimal_point_set_directions(sphere, field, np.alignment_weight(0.9));
+  std::size_t near = 0, counted = 0;
+  for(auto i : sphere)
+    if(along[i].squared_length() > 0.25)
+    {
+      ++counted;
+      near += angle_to(field[i], along[i], sphere.normal(i), 4) < 5. * CGAL_PI / 180.;
+    }
+  const SMDF::Component_report& c = guided.components[0];
+  report.check(near >= 0.95 * counted, "a sphere guided along its parallels: 95% within 5 degrees (" +
+                                         std::to_string(near) + " of " + std::to_string(counted) + ")");
+  report.check(std::abs(c.alignment_weight - 0.9) < 1e-3 && c.eigenvalue && c.lambda < *c.eigenvalue,
+               "alignment_weight 0.9 reached (" + std::to_string(c.alignment_weight) + "), lambda_t below lambda_1");
+
+  auto refused = [&](auto call, const std::string& what) {
+    try
+    {
+      call();
+    }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      return report.check(std::string(e.what()).find('\n') == std::string::npos, what + ": " + e.what());
+    }
+    return report.check(false, what + " is refused");
+  };
+  refused([&] { SMDF::compute_globally_optimal_point_set_directions(sphere, field, np.alignment_lambda(1e6)); },
+          "alignment_lambda above lambda_1");
+  refused([&] { SMDF::compute_globally_optimal_point_set_directions(
+                  sphere, field, sphere.parameters().alignment_weight(0.5)); }, "alignment_weight without guidance");
+  along[*sphere.begin()] = Vector_3(std::nan(""), 0, 0);
+  refused([&] { SMDF::compute_globally_optimal_point_set_directions(sphere, field, np); }, "a NaN guidance vector");
 }
 
 // Normals estimated by jet fitting give nearly the field of the exact normals.
@@ -287,6 +360,7 @@ int main()
   test_mesh_vertices();
   test_invariance();
   test_estimated_normals();
+  test_guidance();
   test_hostile_points();
   return report.finish();
 }

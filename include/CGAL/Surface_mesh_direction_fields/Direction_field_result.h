@@ -237,6 +237,9 @@ struct Face_direction_field_result
   /// number of pairs of singular vertices with opposite indices removed by `singularity_cancellation_radius`
   /// (0 without it); the field is then the parallel one with the remaining singularities (`prescribed` is `true`)
   std::size_t number_of_cancelled_pairs = 0;
+  /// number of non-manifold edges across which the faces share the field (named parameter
+  /// `vertex_point_index_map`; 0 without it)
+  std::size_t number_of_glued_edges = 0;
   /// wall-clock times
   Direction_field_timings timings;
 };

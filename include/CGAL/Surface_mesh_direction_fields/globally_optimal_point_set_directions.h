@@ -42,19 +42,28 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+// The map's value at each point (a position or a vector) as three doubles,
+// every coordinate finite; `refusal(i)`: the error's words for point i.
+template <typename PointRange, typename Map, typename Refusal>
+std::vector<Vec3> finite_values(const PointRange& points, Map map, Refusal refusal)
+{
+  std::vector<Vec3> values;
+  for(const auto& p : points)
+  {
+    const auto& v = get(map, p);
+    values.push_back({to_double(v.x()), to_double(v.y()), to_double(v.z())});
+    for(double x : values.back())
+      if(!std::isfinite(x)) throw Invalid_input_error(refusal(values.size() - 1));
+  }
+  return values;
+}
+
 template <typename PointRange, typename PointMap>
 std::vector<Vec3> point_positions(const PointRange& points, PointMap point_map)
 {
-  std::vector<Vec3> positions;
-  for(const auto& p : points)
-  {
-    const auto& q = get(point_map, p);
-    positions.push_back({to_double(q.x()), to_double(q.y()), to_double(q.z())});
-    for(double x : positions.back())
-      if(!std::isfinite(x))
-        throw Invalid_input_error("point " + std::to_string(positions.size() - 1) + " has a coordinate that is not finite");
-  }
-  return positions;
+  return finite_values(points, point_map, [](std::size_t i) {
+    return "point " + std::to_string(i) + " has a coordinate that is not finite";
+  });
 }
 
 // Whether the named parameters hold a normal map, and a valid one: the
@@ -73,17 +82,24 @@ bool names_normals(const NamedParameters& np)
   }
 }
 
+// The user's guidance vectors, one per point (any length; zero: no preference).
+template <typename PointRange, typename GuidanceMap>
+std::vector<Vec3> point_guidance(const PointRange& points, GuidanceMap guidance_map)
+{
+  return finite_values(points, guidance_map, [](std::size_t i) {
+    return "the guidance vector of point " + std::to_string(i) + " is not finite";
+  });
+}
+
 template <typename PointRange, typename NormalMap>
 std::vector<Vec3> given_normals(const PointRange& points, NormalMap normal_map)
 {
-  std::vector<Vec3> normals;
-  for(const auto& p : points)
+  const auto refusal = [](std::size_t i) { return "the normal of point " + std::to_string(i) + " is zero or not finite"; };
+  std::vector<Vec3> normals = finite_values(points, normal_map, refusal);
+  for(std::size_t i = 0; i < normals.size(); ++i)
   {
-    const auto& v = get(normal_map, p);
-    const Vec3 n = {to_double(v.x()), to_double(v.y()), to_double(v.z())};
-    if(!(squared_norm(n) > 0.) || !std::isfinite(squared_norm(n)))
-      throw Invalid_input_error("the normal of point " + std::to_string(normals.size()) + " is zero or not finite");
-    normals.push_back(normalized(n));
+    if(!(squared_norm(normals[i]) > 0.) || !std::isfinite(squared_norm(normals[i]))) throw Invalid_input_error(refusal(i));
+    normals[i] = normalized(normals[i]);
   }
   return normals;
 }
@@ -93,15 +109,16 @@ std::vector<Vec3> given_normals(const PointRange& points, NormalMap normal_map)
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsRef
 
-\brief computes the globally smoothest unit `n`-direction field of a point set,
-and its singularities.
+\brief computes the globally smoothest (or guided) unit `n`-direction field of
+a point set, and its singularities.
 
 The points need no mesh: each point's nearest neighbours are projected onto
 its tangent plane and triangulated there, and the field is the smoothest one
 for the energy and mass of the mesh method summed over these local
-triangulations (see the \ref SMDF_point_sets "user manual"). Each connected
-component (points joined by triangles) is solved on its own; a point in no
-triangle receives the zero vector.
+triangulations (see the \ref SMDF_point_sets "user manual"), or with
+`point_guidance_map` the field that trades smoothness for alignment with the
+guidance, as on a mesh. Each connected component (points joined by triangles)
+is solved on its own; a point in no triangle receives the zero vector.
 
 \tparam PointRange a model of `ConstRange` whose iterator type is `InputIterator`
 \tparam PointDirectionMap a model of `WritablePropertyMap` with the range's value type as key type and
@@ -141,6 +158,27 @@ triangle receives the zero vector.
                            from, 3 or more; about 24 for noisy scans, where 12 lets the noise into the tangent planes}
     \cgalParamDefault{`default_number_of_neighbors` (12)}
   \cgalParamNEnd
+  \cgalParamNBegin{point_guidance_map}
+    \cgalParamDescription{a guidance vector per point, projected to the point's tangent plane; its length is its
+                          weight and the zero vector means no preference (as `vertex_guidance_map` on a mesh). The
+                          field then solves \f$ (A - \lambda_t M) u = M q \f$ per component, as on a mesh}
+    \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Vector_3` as
+                   value type}
+    \cgalParamDefault{no guidance: the smoothest field}
+  \cgalParamNEnd
+  \cgalParamNBegin{alignment_lambda}
+    \cgalParamDescription{with a guidance, \f$ \lambda_t \f$, below each component's smallest eigenvalue, as on a mesh}
+    \cgalParamDefault{`0`, or just below \f$ \lambda_1 \f$ where \f$ \lambda_1 \f$ is about 0}
+  \cgalParamNEnd
+  \cgalParamNBegin{alignment_weight}
+    \cgalParamDescription{with a guidance, instead of \f$ \lambda_t \f$: the weight \f$ t \in (0, 1) \f$ to
+                          reach, as on a mesh}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{compute_eigenvalue_bound}
+    \cgalParamDescription{whether a guided field also reports \f$ \lambda_1 \f$}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{residual_tolerance}
     \cgalParamDescription{the eigen-solve's relative residual, as on a mesh}
     \cgalParamDefault{`1e-10`}
@@ -148,11 +186,12 @@ triangle receives the zero vector.
 \cgalNamedParamsEnd
 
 \returns a `Point_set_direction_field_result`: the normals used, the triangles of the local triangulations and
-         the surface triangles, the singular triangles with their indices, and per component the smallest
-         eigenvalue, the iterations and the residual
+         the surface triangles, the singular triangles with their indices, and per component what was solved
+         (the smallest eigenvalue, the iterations and the residual; with a guidance \f$ \lambda_t \f$ and the
+         alignment weight reached)
 
-\throws Invalid_input_error with fewer than 3 points, a coordinate or normal that is not finite, an option out
-        of range, or no triangle at all (all points on a line, or all at one position)
+\throws Invalid_input_error with fewer than 3 points, a coordinate, normal or guidance vector that is not finite,
+        an option out of range, or no triangle at all (all points on a line, or all at one position)
 */
 #ifndef DOXYGEN_RUNNING
 inline namespace CGAL_SURFACE_MESH_DIRECTION_FIELDS_DEFAULT_SOLVER_NAMESPACE {  // see Default_direction_field_solver
@@ -178,12 +217,15 @@ Point_set_direction_field_result compute_globally_optimal_point_set_directions(
   request.s = s;
   request.number_of_neighbors = k;
   request.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::point_guidance_map_t>::value)
+    request.guidance = internal::point_guidance(points, get_parameter(np, internal_np::point_guidance_map));
+  request.alignment = internal::alignment_request(np, !request.guidance.empty());
 
   internal::Indexed_mesh cloud;
   cloud.points = internal::point_positions(points, NP_helper::get_const_point_map(points, np));
   if(cloud.points.size() < 3)
     throw Invalid_input_error("a point set needs 3 points or more (got " + std::to_string(cloud.points.size()) + ")");
-  internal::normalize_coordinates(cloud);  // the field does not change; the arithmetic stays in range
+  request.length_scale = internal::normalize_coordinates(cloud);  // the field does not change
 
   const auto start = std::chrono::steady_clock::now();
   Point_set_direction_field_result result;

@@ -19,8 +19,8 @@
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Engine/face_component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/sequential_component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
@@ -305,6 +305,7 @@ private:
     Face_direction_field_result result;
     result.degree = request.degree;
     result.mollification = m_spaces.mollification / m_length_scale;
+    result.number_of_glued_edges = m_dual.number_of_glued_edges;
     Progress_report progress(request.progress);
     const Scoped_interruption_check interruption(progress.keep_going_test());  // asked during factorizations too
     progress.reached(0.);
@@ -316,10 +317,12 @@ private:
     options.random_seed = request.random_seed;
     options.keep_going = progress.keep_going_within_step();
     options.transport_in_energy = true;
-    Face_component_systems<SparseSolver> systems(m_components, m_length_scale, user_solver);
+    std::vector<std::size_t> unknowns;
+    for(const Component& comp : m_components.list) unknowns.push_back(comp.faces.size());
+    Sequential_component_systems<SparseSolver> systems(std::move(unknowns), m_length_scale, user_solver);
     Alignment_request alignment = request.alignment;
     alignment.lambda = systems.eigenvalue_from_user(alignment.lambda);
-    Component_fields<Face_component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
+    Component_fields<Sequential_component_systems<SparseSolver> > fields(systems, options, linear_solver, result.timings);
     std::vector<Complex> u(m_mesh.number_of_faces(), Complex(0., 0.));
     result.components.resize(m_components.list.size());
     result.timings.setup_ms = milliseconds_since(start);
@@ -474,7 +477,7 @@ private:
   // the faces) for its share of the guidance and constraints.
   Complex_vector solve_component(std::size_t c, const std::vector<Complex>& guidance,
                                  const std::vector<Complex>& constraint_values, const Alignment_request& alignment,
-                                 Component_fields<Face_component_systems<SparseSolver> >& fields,
+                                 Component_fields<Sequential_component_systems<SparseSolver> >& fields,
                                  Face_field_component_report& report) const
   {
     const Component& comp = m_components.list[c];

@@ -15,6 +15,7 @@
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/vector_math.h>
 
 #include <chrono>
@@ -38,6 +39,9 @@ struct Point_set_field_request
   double s = 0.;
   unsigned int number_of_neighbors = 12;
   double residual_tolerance = 1e-10;
+  std::vector<Vec3> guidance;  // a vector per point, or empty: none
+  Alignment_request alignment;
+  double length_scale = 1.;    // of normalize_coordinates(): eigenvalues and lambda_t in the user's units
 };
 
 template <typename SparseSolver>

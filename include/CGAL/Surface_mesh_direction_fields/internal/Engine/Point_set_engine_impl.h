@@ -85,7 +85,8 @@ inline std::vector<double> relative_magnitudes(const Point_set_solution& solutio
   return magnitudes;
 }
 
-inline void report_point_set(const Point_set_domain& d, const Point_set_solution& solution,
+// `length_scale`: of normalize_coordinates() (eigenvalues scale like the inverse of an area).
+inline void report_point_set(const Point_set_domain& d, const Point_set_solution& solution, double length_scale,
                              Point_set_direction_field_result& result)
 {
   const Indexed_mesh& m = d.triangles;
@@ -101,13 +102,11 @@ inline void report_point_set(const Point_set_domain& d, const Point_set_solution
   for(const Point_set_component& c : solution.components)
   {
     Component_report report;
+    static_cast<Component_solve_report&>(report) = c.report;
     report.number_of_vertices = c.points.size();
     report.number_of_faces = c.faces.size();
-    report.eigenvalue = c.eigenvalue;
-    report.residual = c.residual;
-    report.iterations = c.iterations;
-    report.converged = c.converged;
-    report.solve = Field_solve::EIGEN_SOLVE;
+    if(report.eigenvalue) *report.eigenvalue *= length_scale * length_scale;
+    report.lambda *= length_scale * length_scale;
     result.components.push_back(report);
     covered += c.points.size();
   }
@@ -132,14 +131,14 @@ std::vector<Vec3> Point_set_engine<SparseSolver>::compute(const std::vector<Vec3
   if(domain.triangles.number_of_faces() == 0)
     throw Invalid_input_error("the points span no triangle (all on a line or at one position)");
 
-  SparseSolver solver;
   Eigen_solve_options options;
   options.residual_tolerance = request.residual_tolerance;
   const double before_solve = milliseconds_since(start);
-  const Point_set_solution solution = solve_point_set_field(domain, request.s, options, solver);
-  report_point_set(domain, solution, result);
-  result.timings.factorization_ms = solution.factorization_ms;
-  result.timings.setup_ms = before_solve + solution.assembly_ms;
+  const Point_set_solution solution = solve_point_set_field<SparseSolver>(
+    domain, request.degree, request.s, request.guidance, request.alignment, options, request.length_scale);
+  report_point_set(domain, solution, request.length_scale, result);
+  result.timings.factorization_ms = solution.timings.factorization_ms;
+  result.timings.setup_ms = before_solve + solution.timings.setup_ms;
   result.normals = normals;
   result.magnitudes = relative_magnitudes(solution);
 

@@ -38,7 +38,7 @@
 // Fields", which hold on faces with the matrices of the faces).
 //
 // `Systems` gives each component's linear systems: Component_systems (on
-// vertices) or Face_component_systems (on faces). It provides
+// vertices) or Sequential_component_systems (on faces and point sets). It provides
 //   Solver, Factorization (a Component_factorization<Solver>), detects_indefinite,
 //   aligned_in_single_precision, unknowns(c), eigenvalue_to_user(lambda),
 //   matrices(c), matrices_of_single_use(c) (null: keep them), mass_times(c, x),

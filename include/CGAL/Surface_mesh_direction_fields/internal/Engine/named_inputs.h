@@ -155,7 +155,7 @@ Alignment_request alignment_request(const NamedParameters& np, bool has_guidance
   if(r.weight_given && !(r.weight > 0. && r.weight < 1.))
     throw Invalid_input_error("alignment_weight must lie in (0, 1) (got " + compact_number(r.weight) + ")");
   if(r.weight_given && !has_guidance)
-    throw Invalid_input_error("alignment_weight needs a guidance field (vertex_guidance_map or principal_curvature_alignment)");
+    throw Invalid_input_error("alignment_weight needs a guidance field (a guidance map or principal_curvature_alignment)");
   return r;
 }
 

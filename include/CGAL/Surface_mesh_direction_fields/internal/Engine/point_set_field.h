@@ -14,25 +14,30 @@
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
+#include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/sequential_component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/point_set_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <complex>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
 #include <utility>
 #include <vector>
 
-// The smoothest field of a point set (user manual, "Point Sets"): the
-// triangles of the local triangulations split the points into components
-// (points joined by a triangle), and each component's field is the smallest
-// eigenvector of its pencil (A, M), as on a mesh.
+// The field of a point set (user manual, "Point Sets"): the triangles of the
+// local triangulations split the points into components (points joined by a
+// triangle), and each component's field is solved as on a mesh.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -41,9 +46,7 @@ namespace internal {
 struct Point_set_component
 {
   std::vector<std::size_t> points, faces;
-  double eigenvalue = 0., residual = 0.;
-  std::size_t iterations = 0;
-  bool converged = false;
+  Component_solve_report report;  // eigenvalue and lambda_t in the normalized coordinates' units
 };
 
 struct Point_set_solution
@@ -51,7 +54,7 @@ struct Point_set_solution
   std::vector<Complex> coefficients;  // per point; 0 for a point of no triangle
   std::vector<Point_set_component> components;
   std::vector<int> face_index;        // per triangle of the domain
-  double assembly_ms = 0., factorization_ms = 0.;
+  Direction_field_timings timings;    // the assembly (setup_ms) and the factorizations
 };
 
 inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
@@ -93,41 +96,67 @@ inline std::vector<Point_set_component> point_set_components(const Indexed_mesh&
   return components;
 }
 
-template <typename SparseSolver>
-void solve_point_set_component(const Point_set_domain& d, double s, const Eigen_solve_options& options,
-                               SparseSolver& solver, std::vector<std::size_t>& local_index,
-                               Point_set_component& comp, Point_set_solution& solution)
+// The coefficient |w| exp(i n theta) of a vector w at point i, theta its
+// angle in the tangent plane from the reference direction X_i (the
+// direction of angle theta is point i's output for that coefficient).
+inline Complex point_coefficient(const Point_set_domain& d, std::size_t i, const Vec3& w, int degree)
 {
-  const auto start = std::chrono::steady_clock::now();
-  const auto size = static_cast<Eigen::Index>(comp.points.size());
-  for(std::size_t a = 0; a < comp.points.size(); ++a) local_index[comp.points[a]] = a;
-  Complex_sparse_matrix A, M;
-  assemble_point_set(d, comp.faces, local_index, size, s, A, M);
-  solution.assembly_ms += milliseconds_since(start);
-  std::vector<Complex>& coefficients = solution.coefficients;
-  Factored_matrix<SparseSolver> factored(solver);
-  const Eigen_solve_result eig = smallest_eigenpair(A, M, factored, options);
-  if(eig.vector.size() != size) throw Solver_failure_error("the eigen-solve of a point set's component failed");
-  for(std::size_t a = 0; a < comp.points.size(); ++a)
-    coefficients[comp.points[a]] = eig.vector[static_cast<Eigen::Index>(a)];
-  comp.eigenvalue = eig.eigenvalue;
-  comp.residual = eig.residual;
-  comp.iterations = eig.iterations;
-  comp.converged = eig.converged;
-  solution.factorization_ms += eig.factorization_ms;
+  const Vec3& n = d.normals[i];
+  const Vec3 tangent = w - dot(w, n) * n;
+  const double length = norm(tangent);
+  if(!(length > 0.)) return Complex(0., 0.);
+  const double theta = std::atan2(dot(tangent, cross(n, d.reference[i])), dot(tangent, d.reference[i]));
+  return std::polar(length, degree * theta);
+}
+
+// The field of each component (user manual, "Point Sets"): the smallest
+// eigenvector of its pencil, or with a guidance (one vector per point, or
+// none) the aligned solve, as on a mesh (Component_fields). The matrices are
+// freed on return.
+template <typename SparseSolver>
+void solve_point_set_components(const Point_set_domain& d, int degree, double s, const std::vector<Vec3>& guidance,
+                                const Alignment_request& alignment, const Eigen_solve_options& options,
+                                double length_scale, Point_set_solution& solution)
+{
+  std::vector<std::size_t> unknowns;
+  for(const Point_set_component& comp : solution.components) unknowns.push_back(comp.points.size());
+  Sequential_component_systems<SparseSolver> systems(std::move(unknowns), length_scale, nullptr);
+  Alignment_request request = alignment;
+  request.lambda = systems.eigenvalue_from_user(request.lambda);
+  SparseSolver linear_solver;
+  Component_fields<Sequential_component_systems<SparseSolver> > fields(systems, options, linear_solver,
+                                                                      solution.timings);
+  std::vector<std::size_t> local_index(d.triangles.number_of_vertices(), no_point);
+  for(std::size_t c = 0; c < solution.components.size(); ++c)
+  {
+    Point_set_component& comp = solution.components[c];
+    const auto start = std::chrono::steady_clock::now();
+    const auto size = static_cast<Eigen::Index>(comp.points.size());
+    for(std::size_t a = 0; a < comp.points.size(); ++a) local_index[comp.points[a]] = a;
+    Energy_and_mass em;
+    assemble_point_set(d, comp.faces, local_index, size, s, em.energy, em.mass);
+    systems.set_matrices(c, std::move(em));
+    solution.timings.setup_ms += milliseconds_since(start);
+    Complex_vector q;
+    if(!guidance.empty()) q.resize(size);
+    for(std::size_t a = 0; a < comp.points.size() && !guidance.empty(); ++a)
+      q[static_cast<Eigen::Index>(a)] = point_coefficient(d, comp.points[a], guidance[comp.points[a]], degree);
+    const Complex_vector u = fields.field_of(c, q, Constraints(), request, comp.report);
+    if(u.size() != size) throw Solver_failure_error("the solve of a point set's component failed");
+    for(std::size_t a = 0; a < comp.points.size(); ++a)
+      solution.coefficients[comp.points[a]] = u[static_cast<Eigen::Index>(a)];
+  }
 }
 
 template <typename SparseSolver>
-Point_set_solution solve_point_set_field(const Point_set_domain& d, double s, const Eigen_solve_options& options,
-                                         SparseSolver& solver)
+Point_set_solution solve_point_set_field(const Point_set_domain& d, int degree, double s,
+                                         const std::vector<Vec3>& guidance, const Alignment_request& alignment,
+                                         const Eigen_solve_options& options, double length_scale)
 {
   Point_set_solution solution;
-  const std::size_t np = d.triangles.number_of_vertices();
-  solution.coefficients.assign(np, Complex(0., 0.));
+  solution.coefficients.assign(d.triangles.number_of_vertices(), Complex(0., 0.));
   solution.components = point_set_components(d.triangles);
-  std::vector<std::size_t> local_index(np, no_point);
-  for(Point_set_component& comp : solution.components)
-    solve_point_set_component(d, s, options, solver, local_index, comp, solution);
+  solve_point_set_components<SparseSolver>(d, degree, s, guidance, alignment, options, length_scale, solution);
   solution.face_index = face_indices(d.triangles, d.connection, solution.coefficients);
   return solution;
 }

@@ -70,6 +70,7 @@ struct Dual_connection
   };
   std::vector<Glued_pair> glued;
   std::vector<unsigned char> is_glued;
+  std::size_t number_of_glued_edges = 0;  // the non-manifold edges (groups of sides)
 };
 
 // The weight |e| / |e*| of the dual edge: the side's length over the distance
@@ -143,6 +144,7 @@ inline void glue_non_manifold_sides(const Indexed_mesh& m, const Tangent_spaces&
   dc.is_glued.assign(3 * m.number_of_faces(), 0);
   for(const std::vector<std::size_t>& group : non_manifold_side_groups(m, point_of_vertex))
   {
+    ++dc.number_of_glued_edges;
     const double share = 1. / static_cast<double>(group.size() - 1);
     for(std::size_t i = 0; i < group.size(); ++i)
       for(std::size_t j = i + 1; j < group.size(); ++j)

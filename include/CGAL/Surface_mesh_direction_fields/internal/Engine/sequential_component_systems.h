@@ -9,8 +9,8 @@
 //
 // Author(s)     : The Surface_mesh_direction_fields authors
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_SEQUENTIAL_COMPONENT_SYSTEMS_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_SEQUENTIAL_COMPONENT_SYSTEMS_H
 
 #include <CGAL/license/Surface_mesh_direction_fields.h>
 
@@ -19,48 +19,57 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/factored_matrix.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Mesh/components.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/assembly.h>
 
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
-// The linear systems of a field on faces, one component at a time, for
-// Component_fields (component_fields.h): A and M of the faces of the
-// component being solved, and its factorization, both freed when it is done.
+// The linear systems of a field solved on this process one component at a
+// time (fields on faces, and on point sets), for Component_fields
+// (component_fields.h): A and M of the component being solved, and its
+// factorization, both freed when it is done.
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
 template <typename SparseSolver>
-class Face_component_systems
+class Sequential_component_systems
 {
 public:
   typedef SparseSolver Solver;
   typedef Component_factorization<SparseSolver> Factorization;
   static constexpr bool detects_indefinite = Factored_matrix<SparseSolver>::detects_indefinite;
-  // the aligned systems on faces are factored in double precision, as they were before
-  // the engines were one (single precision with refinement is not measured on faces)
+  // the aligned systems are factored in double precision (single precision with
+  // refinement is measured on vertex fields only)
   static constexpr bool aligned_in_single_precision = false;
 
+  // `unknowns`: per component, its number of unknowns (faces, or points);
   // `user_solver`: the user's solver, copied into each factorization (or null).
-  Face_component_systems(const Components& components, double length_scale, const SparseSolver* user_solver)
-    : m_components(components), m_length_scale(length_scale), m_user_solver(user_solver),
-      m_matrices(components.list.size())
+  Sequential_component_systems(std::vector<std::size_t> unknowns, double length_scale, const SparseSolver* user_solver)
+    : m_unknowns(std::move(unknowns)), m_length_scale(length_scale), m_user_solver(user_solver),
+      m_matrices(m_unknowns.size())
   {}
 
-  // Component c's A and M (the previous component's are freed).
-  void set_matrices(std::size_t c, Energy_and_mass em)
+  // Component c's A and M, taken from `em` (left empty), and the previous
+  // component's freed: swapped, since Eigen's sparse matrices have no move
+  // (std::move would copy them) and an assignment keeps their arrays.
+  void set_matrices(std::size_t c, Energy_and_mass&& em)
   {
-    if(m_filled) m_matrices[*m_filled] = Energy_and_mass();
-    m_matrices[c] = std::move(em);
+    if(m_filled)
+    {
+      Complex_sparse_matrix().swap(m_matrices[*m_filled].energy);
+      Complex_sparse_matrix().swap(m_matrices[*m_filled].mass);
+    }
+    m_matrices[c].energy.swap(em.energy);
+    m_matrices[c].mass.swap(em.mass);
     m_filled = c;
   }
 
-  std::size_t unknowns(std::size_t c) const { return m_components.list[c].faces.size(); }
+  std::size_t unknowns(std::size_t c) const { return m_unknowns[c]; }
   // eigenvalues between the normalized coordinates (lengths times length_scale) and the user's (one
   // factor at a time: the square of length_scale may underflow)
   double eigenvalue_to_user(double lambda) const { return lambda * m_length_scale * m_length_scale; }
@@ -83,12 +92,12 @@ public:
   void release_factorization(std::size_t) { m_factorization.reset(); }
   bool user_solver() const { return m_user_solver != nullptr; }
 
-  // Fields on faces are solved on this process alone.
+  // These fields are solved on this process alone.
   bool certifies_definiteness(std::size_t) const { return detects_indefinite; }
   bool distributes(std::size_t) const { return false; }
   Eigen_solve_result distributed_eigenpair(std::size_t, const Eigen_solve_options&) const
   {
-    throw Solver_failure_error("fields on faces have no distributed eigen-solve");
+    throw Solver_failure_error("fields on faces and point sets have no distributed eigen-solve");
   }
   bool distributed_shifted_solve(std::size_t, double, const Complex_vector&, const Constraints&,
                                  Complex_vector&) const
@@ -97,7 +106,7 @@ public:
   }
 
 private:
-  const Components& m_components;
+  std::vector<std::size_t> m_unknowns;
   double m_length_scale;
   const SparseSolver* m_user_solver;
   std::vector<Energy_and_mass> m_matrices;
@@ -109,4 +118,4 @@ private:
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_FACE_COMPONENT_SYSTEMS_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ENGINE_SEQUENTIAL_COMPONENT_SYSTEMS_H
