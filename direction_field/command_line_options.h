@@ -5,6 +5,7 @@
 #define SURFACE_MESH_DIRECTION_FIELDS_PROGRAM_COMMAND_LINE_OPTIONS_H
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
+#include <CGAL/Surface_mesh_direction_fields/alignment.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
 
 #include "file_io/messages.h"
@@ -109,7 +110,8 @@ inline const Option_help option_help[] = {
                                         "the same field turned off the constrained faces (not with --prescribe; "
                                         "default 0: none removed)"},
   {"Alignment", "--align WHAT", "none (default), curvature (= max-curvature), min-curvature or max-curvature: "
-                                "follow the principal curvature directions (even n)"},
+                                "follow the principal curvature directions (even n; on a point set a quadric "
+                                "fitted to each point's 2K nearest points, K of --neighbors)"},
   {"Alignment", "--guidance FILE", "follow a vector field: one 'x y z' per vertex of MESH, or per point of a "
                                    "point set (length = weight, zero = no preference)"},
   {"Alignment", "--lambda L", "the lambda_t of (A - lambda_t M) u = M q (default: chosen by the library)"},
@@ -322,6 +324,13 @@ inline bool parse_valued_option(Options& o, const std::string& a, const std::str
   else if(a == "--huge-pages") o.huge_pages = v;
   else return false;
   return true;
+}
+
+// --align as the library's enumeration (meshes, faces and point sets).
+inline CGAL::Surface_mesh_direction_fields::Principal_curvature_alignment curvature_alignment(const Options& o)
+{
+  typedef CGAL::Surface_mesh_direction_fields::Principal_curvature_alignment Alignment;
+  return o.align == "none" ? Alignment::NONE : o.align == "min-curvature" ? Alignment::MINIMUM : Alignment::MAXIMUM;
 }
 
 // --prescribe and what does not combine with it: the field solves no

@@ -327,7 +327,7 @@ void compute_field(const Options& o, const Repaired_mesh<Mesh>& input, const Pro
                 .random_seed(o.seed)
                 .number_of_iterations(o.max_iterations)
                 .residual_tolerance(o.tolerance)
-                .principal_curvature_alignment(face_field_run::curvature_alignment(o))
+                .principal_curvature_alignment(curvature_alignment(o))
                 .boundary_alignment(face_field_run::boundary_alignment(o))
                 .compute_eigenvalue_bound(o.eigenvalue_bound)
                 .principal_curvature_estimate(o.curvature_estimate == "hopf"

@@ -60,14 +60,7 @@ std::vector<std::array<std::size_t, 2> > feature_edges(const Options& o, const M
   return edges;
 }
 
-// --align and --constrain-boundary as the library's enumerations (both fields).
-inline SMDF::Principal_curvature_alignment curvature_alignment(const Options& o)
-{
-  return o.align == "none"            ? SMDF::Principal_curvature_alignment::NONE
-         : o.align == "min-curvature" ? SMDF::Principal_curvature_alignment::MINIMUM
-                                      : SMDF::Principal_curvature_alignment::MAXIMUM;
-}
-
+// --constrain-boundary as the library's enumeration (both fields).
 inline SMDF::Boundary_alignment boundary_alignment(const Options& o)
 {
   return o.constrain_boundary == "tangent"  ? SMDF::Boundary_alignment::TANGENT

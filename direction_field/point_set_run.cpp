@@ -5,6 +5,7 @@
 #include "point_set_run.h"
 
 #include "command_line_options.h"
+#include "file_io/optional_named_parameters.h"
 #include "file_io/output_files.h"
 #include "file_io/read_polygon_soup.h"
 #include "guidance_file.h"
@@ -31,6 +32,7 @@
 namespace point_set_run {
 
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
+namespace onp = optional_named_parameters;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Point_set_3<Kernel::Point_3, Kernel::Vector_3> Point_set;
 
@@ -116,9 +118,9 @@ inline void check_point_set_options(const Options& o)
 {
   if(o.on != "vertices") throw Usage_error("--on faces applies to meshes: a point set has its field on its points");
   const std::pair<const char*, bool> refused[] = {
-    {"--align", o.align != "none"}, {"--constrain-boundary", o.constrain_boundary != "none"},
+    {"--constrain-boundary", o.constrain_boundary != "none"},
     {"--feature-angle", o.feature_angle > 0.}, {"--prescribe", !o.prescribe.empty()},
-    {"--eigenvalue-bound", o.eigenvalue_bound}, {"--solver", o.solver != "default"},
+    {"--solver", o.solver != "default"},
     {"--singularities", !o.singularities.empty()}, {"--vtk-singularities", !o.vtk_singularities.empty()},
     {"--rosy", !o.rosy.empty()}, {"--ffield", !o.ffield.empty()}, {"--sharp", !o.sharp.empty()},
     {"--singularity-list", !o.singularity_list.empty()}, {"--streamlines", !o.streamlines.empty()},
@@ -148,24 +150,6 @@ struct Point_field
   double compute_ms = 0.;
 };
 
-// The library's call with the named parameters `np` and those of --guidance,
-// --lambda and --alignment-weight.
-template <typename NamedParameters>
-SMDF::Point_set_direction_field_result guided_call(const Options& o, const Point_set& points,
-                                                   const NamedParameters& np,
-                                                   const std::vector<Kernel::Vector_3>& guidance,
-                                                   const Direction_map& direction_map)
-{
-  if(guidance.empty()) return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, np);
-  const auto guided = np.point_guidance_map(CGAL::make_property_map(guidance));
-  if(o.lambda_given)
-    return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, guided.alignment_lambda(o.lambda));
-  if(o.weight_given)
-    return SMDF::compute_globally_optimal_point_set_directions(points, direction_map,
-                                                               guided.alignment_weight(o.weight));
-  return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, guided);
-}
-
 inline Point_field compute(const Options& o, const Point_set& points)
 {
   Point_field field;
@@ -173,14 +157,23 @@ inline Point_field compute(const Options& o, const Point_set& points)
   if(!o.guidance.empty())
     for(const auto& g : read_guidance_file(o.guidance, points.size(), "points")) guidance.emplace_back(g[0], g[1], g[2]);
   const Direction_map direction_map{&directions};
-  auto np = CGAL::parameters::point_map(points.point_map())
-              .degree(o.degree)
-              .smoothness_parameter(o.s)
-              .number_of_neighbors(o.neighbors)
-              .residual_tolerance(o.tolerance);
+  const auto np = CGAL::parameters::point_map(points.point_map())
+                    .degree(o.degree)
+                    .smoothness_parameter(o.s)
+                    .number_of_neighbors(o.neighbors)
+                    .residual_tolerance(o.tolerance)
+                    .principal_curvature_alignment(curvature_alignment(o))
+                    .compute_eigenvalue_bound(o.eigenvalue_bound);
+  onp::Given_options<onp::Not_offered, decltype(CGAL::make_property_map(guidance)), onp::Not_offered> given;
+  if(!guidance.empty()) given.guidance = CGAL::make_property_map(guidance);
+  if(o.weight_given) given.alignment_weight = o.weight;
+  else if(o.lambda_given) given.alignment_lambda = o.lambda;
+  auto compute = [&](const auto& with) {
+    return SMDF::compute_globally_optimal_point_set_directions(points, direction_map, with);
+  };
   field.result = points.has_normal_map()
-                   ? guided_call(o, points, np.normal_map(points.normal_map()), guidance, direction_map)
-                   : guided_call(o, points, np, guidance, direction_map);
+                   ? onp::compute_with_point_guidance(given, np.normal_map(points.normal_map()), compute)
+                   : onp::compute_with_point_guidance(given, np, compute);
   field.directions = directions;
   for(Point_set::Index i : points) field.points.push_back(points.point(i));
   return field;

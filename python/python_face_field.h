@@ -70,13 +70,10 @@ void read_prescribed_vertices(const py::object& value, const Mesh& mesh, Face_op
 // constraints = (face ids, directions k x 3)
 void read_face_constraints(const py::object& value, const Mesh& mesh, Face_options& o)
 {
-  const py::tuple pair = option_as<py::tuple>(value, "constraints", "a pair (face ids, directions)");
-  if(pair.size() != 2) refuse("constraints must be a pair (face ids, directions of shape (k, 3))");
-  const Index_array ids = integer_array(pair[0], "constraints' face ids");
-  if(ids.ndim() != 1) refuse("constraints: the face ids must be a 1-dimensional array");
-  const Float_array d = rows_of_three(pair[1], static_cast<std::size_t>(ids.shape(0)), "constraints' directions");
+  const Constraint_arrays c = constraint_arrays(value, "face");
+  const Index_array& ids = c.ids;
   const auto id = ids.unchecked<1>();
-  const auto dir = d.unchecked<2>();
+  const auto dir = c.directions.unchecked<2>();
   for(py::ssize_t i = 0; i < ids.shape(0); ++i)
   {
     if(id(i) < 0 || static_cast<std::size_t>(id(i)) >= mesh.number_of_faces())

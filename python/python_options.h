@@ -169,16 +169,32 @@ int degree_option(const py::handle& value)
   return py::cast<int>(i);
 }
 
+// constraints = (ids, directions k x 3) of vertices, faces or points (`element`), as checked arrays
+struct Constraint_arrays
+{
+  Index_array ids;
+  Float_array directions;
+};
+
+Constraint_arrays constraint_arrays(const py::object& value, const std::string& element)
+{
+  const std::string pair_of = "a pair (" + element + " ids, directions)";
+  const py::tuple pair = option_as<py::tuple>(value, "constraints", pair_of.c_str());
+  if(pair.size() != 2) refuse("constraints must be " + pair_of.substr(0, pair_of.size() - 1) + " of shape (k, 3))");
+  Constraint_arrays c;
+  c.ids = integer_array(pair[0], ("constraints' " + element + " ids").c_str());
+  if(c.ids.ndim() != 1) refuse("constraints: the " + element + " ids must be a 1-dimensional array");
+  c.directions = rows_of_three(pair[1], static_cast<std::size_t>(c.ids.shape(0)), "constraints' directions");
+  return c;
+}
+
 // constraints = (vertex ids, directions k x 3)
 void read_constraints(const py::object& value, const Mesh& mesh, Options& o)
 {
-  const py::tuple pair = option_as<py::tuple>(value, "constraints", "a pair (vertex ids, directions)");
-  if(pair.size() != 2) refuse("constraints must be a pair (vertex ids, directions of shape (k, 3))");
-  const Index_array ids = integer_array(pair[0], "constraints' vertex ids");
-  if(ids.ndim() != 1) refuse("constraints: the vertex ids must be a 1-dimensional array");
-  const Float_array d = rows_of_three(pair[1], static_cast<std::size_t>(ids.shape(0)), "constraints' directions");
+  const Constraint_arrays c = constraint_arrays(value, "vertex");
+  const Index_array& ids = c.ids;
   const auto id = ids.unchecked<1>();
-  const auto dir = d.unchecked<2>();
+  const auto dir = c.directions.unchecked<2>();
   std::vector<bool> listed(mesh.number_of_vertices(), false);
   for(py::ssize_t i = 0; i < ids.shape(0); ++i)
   {
@@ -242,15 +258,21 @@ void read_loop_turns(const py::object& value, Options& o)
   o.loop_turns = std::move(turns);
 }
 
-void read_enumerations(const py::dict& kw, Options& o)
+// align= (meshes and point sets): none when absent or None.
+SMDF::Principal_curvature_alignment align_option(const py::dict& kw)
 {
   typedef SMDF::Principal_curvature_alignment A;
+  if(!kw.contains("align") || kw["align"].is_none()) return A::NONE;
+  return choose<A>(option_as<std::string>(kw["align"], "align", "a string"), "align",
+                   {{"none", A::NONE}, {"curvature", A::MAXIMUM}, {"max-curvature", A::MAXIMUM},
+                    {"min-curvature", A::MINIMUM}});
+}
+
+void read_enumerations(const py::dict& kw, Options& o)
+{
   typedef SMDF::Principal_curvature_estimate E;
   typedef SMDF::Boundary_alignment B;
-  if(kw.contains("align") && !kw["align"].is_none())
-    o.align = choose<A>(option_as<std::string>(kw["align"], "align", "a string"), "align",
-                        {{"none", A::NONE}, {"curvature", A::MAXIMUM}, {"max-curvature", A::MAXIMUM},
-                         {"min-curvature", A::MINIMUM}});
+  o.align = align_option(kw);
   if(kw.contains("curvature_estimate"))
     o.curvature_estimate = choose<E>(option_as<std::string>(kw["curvature_estimate"], "curvature_estimate", "a string"), "curvature_estimate",
                                      {{"quadric-fit", E::QUADRIC_FIT}, {"hopf", E::HOPF_DIFFERENTIAL}});

@@ -7,6 +7,7 @@
 
 #include "python_options.h"
 #include "python_pickling.h"
+#include "file_io/optional_named_parameters.h"
 
 #include <CGAL/Surface_mesh_direction_fields/globally_optimal_point_set_directions.h>
 
@@ -34,10 +35,14 @@ struct Point_set_options
   unsigned int neighbors = SMDF::default_number_of_neighbors;
   double tolerance = 1e-10;
   std::optional<double> lambda_t, alignment_weight;
+  SMDF::Principal_curvature_alignment align = SMDF::Principal_curvature_alignment::NONE;
+  bool eigenvalue_bound = false;
 };
 
-const char* const point_set_option_names[] = {"normals", "degree",           "s",       "neighbors",
-                                              "tolerance", "guidance", "lambda_t", "alignment_weight"};
+const char* const point_set_option_names[] = {"normals",  "degree",           "s",
+                                              "neighbors", "tolerance",       "guidance",
+                                              "align",    "lambda_t",         "alignment_weight",
+                                              "eigenvalue_bound", "constraints"};
 
 Point_set_options read_point_set_options(const py::dict& kw)
 {
@@ -57,6 +62,9 @@ Point_set_options read_point_set_options(const py::dict& kw)
     o.lambda_t = option_as<double>(kw["lambda_t"], "lambda_t", "a number");
   if(kw.contains("alignment_weight") && !kw["alignment_weight"].is_none())
     o.alignment_weight = option_as<double>(kw["alignment_weight"], "alignment_weight", "a number");
+  o.align = align_option(kw);
+  if(kw.contains("eigenvalue_bound"))
+    o.eigenvalue_bound = option_as<bool>(kw["eigenvalue_bound"], "eigenvalue_bound", "True or False");
   return o;
 }
 
@@ -70,23 +78,33 @@ std::vector<Kernel::Vector_3> vector_rows(const py::dict& kw, const char* name, 
   return vectors;
 }
 
-// The library's call with the named parameters `np` and those of the guidance
-// options given (each a type of its own: one instantiation per combination).
-template <typename NamedParameters>
-SMDF::Point_set_direction_field_result guided_call(const std::vector<std::size_t>& ids, const NamedParameters& np,
-                                                   const Point_set_options& o,
-                                                   const std::vector<Kernel::Vector_3>& guidance,
-                                                   std::vector<Kernel::Vector_3>& directions)
+// constraints = (point ids, directions k x 3), as flags and directions per point (empty: none)
+struct Point_constraints
 {
-  const auto direction_map = CGAL::make_property_map(directions);
-  if(guidance.empty()) return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, np);
-  const auto guided = np.point_guidance_map(CGAL::make_property_map(guidance));
-  if(o.lambda_t)
-    return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, guided.alignment_lambda(*o.lambda_t));
-  if(o.alignment_weight)
-    return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map,
-                                                               guided.alignment_weight(*o.alignment_weight));
-  return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, guided);
+  std::vector<unsigned char> is_constrained;
+  std::vector<Kernel::Vector_3> directions;
+};
+
+Point_constraints point_constraints(const py::dict& kw, std::size_t count)
+{
+  Point_constraints c;
+  if(!kw.contains("constraints") || kw["constraints"].is_none()) return c;
+  const Constraint_arrays given = constraint_arrays(kw["constraints"], "point");
+  const Index_array& ids = given.ids;
+  const auto id = ids.unchecked<1>();
+  const auto dir = given.directions.unchecked<2>();
+  c.is_constrained.assign(count, 0);
+  c.directions.assign(count, CGAL::NULL_VECTOR);
+  for(py::ssize_t i = 0; i < ids.shape(0); ++i)
+  {
+    if(id(i) < 0 || static_cast<std::size_t>(id(i)) >= count)
+      refuse("constraints: point " + std::to_string(id(i)) + " is not a point of P");
+    const std::size_t p = static_cast<std::size_t>(id(i));
+    if(c.is_constrained[p]) refuse("constraints: point " + std::to_string(p) + " is listed twice");
+    c.is_constrained[p] = 1;
+    c.directions[p] = Kernel::Vector_3(dir(i, 0), dir(i, 1), dir(i, 2));
+  }
+  return c;
 }
 
 template <typename T>
@@ -152,8 +170,9 @@ Point_set_field compute_point_set_directions(const py::object& P, const py::kwar
   const Point_set_options o = read_point_set_options(kw);
   const std::vector<Kernel::Vector_3> normals = vector_rows(kw, "normals", points.size());
   const std::vector<Kernel::Vector_3> guidance = vector_rows(kw, "guidance", points.size());
-  if((o.lambda_t || o.alignment_weight) && guidance.empty())
-    refuse(std::string(o.lambda_t ? "lambda_t" : "alignment_weight") + " needs a guidance");
+  const Point_constraints constraints = point_constraints(kw, points.size());
+  if((o.lambda_t || o.alignment_weight) && guidance.empty() && o.align == SMDF::Principal_curvature_alignment::NONE)
+    refuse(std::string(o.lambda_t ? "lambda_t" : "alignment_weight") + " needs a guidance or align");
   if(o.lambda_t && o.alignment_weight) refuse("give either lambda_t or alignment_weight, not both");
   std::vector<std::size_t> ids(points.size());
   for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
@@ -166,10 +185,28 @@ Point_set_field compute_point_set_directions(const py::object& P, const py::kwar
                       .degree(o.degree)
                       .smoothness_parameter(o.s)
                       .number_of_neighbors(o.neighbors)
-                      .residual_tolerance(o.tolerance);
-    r.report = normals.empty() ? guided_call(ids, np, o, guidance, directions)
-                               : guided_call(ids, np.normal_map(CGAL::make_property_map(normals)), o, guidance,
-                                             directions);
+                      .residual_tolerance(o.tolerance)
+                      .principal_curvature_alignment(o.align)
+                      .compute_eigenvalue_bound(o.eigenvalue_bound);
+    optional_named_parameters::Given_options<optional_named_parameters::Not_offered,
+                                             decltype(CGAL::make_property_map(guidance)),
+                                             optional_named_parameters::Not_offered> given;
+    if(!guidance.empty()) given.guidance = CGAL::make_property_map(guidance);
+    given.alignment_weight = o.alignment_weight;
+    given.alignment_lambda = o.lambda_t;
+    const auto direction_map = CGAL::make_property_map(directions);
+    auto compute = [&](const auto& with) {
+      if(constraints.is_constrained.empty())
+        return SMDF::compute_globally_optimal_point_set_directions(ids, direction_map, with);
+      return SMDF::compute_globally_optimal_point_set_directions(
+        ids, direction_map,
+        with.point_is_constrained_map(CGAL::make_property_map(constraints.is_constrained))
+          .point_constrained_direction_map(CGAL::make_property_map(constraints.directions)));
+    };
+    r.report = normals.empty()
+                 ? optional_named_parameters::compute_with_point_guidance(given, np, compute)
+                 : optional_named_parameters::compute_with_point_guidance(
+                     given, np.normal_map(CGAL::make_property_map(normals)), compute);
   }
   fill_point_set_arrays(directions, r);
   return r;
@@ -177,12 +214,15 @@ Point_set_field compute_point_set_directions(const py::object& P, const py::kwar
 
 const char* const point_set_doc =
   "compute_point_set_directions(P, /, *, normals=None, degree=4, s=0.0, neighbors=12, tolerance=1e-10,\n"
-  "                             guidance=None, lambda_t=None, alignment_weight=None)\n\n"
+  "                             guidance=None, align=None, lambda_t=None, alignment_weight=None,\n"
+  "                             eigenvalue_bound=False, constraints=None)\n\n"
   "The smoothest n-direction field of the points P (N, 3), without a mesh (user manual, 'Point Sets'): each\n"
   "point's `neighbors` nearest points are triangulated in its tangent plane (normals (N, 3) when given,\n"
   "estimated by jet fitting otherwise) and the mesh method runs on these local triangulations. With\n"
   "guidance (N, 3: a vector per point, its length its weight), the aligned field, as on a mesh (lambda_t or\n"
-  "alignment_weight as in compute_directions). Returns a\n"
+  "alignment_weight as in compute_directions); align='curvature' (or 'min-curvature', even degree) follows the\n"
+  "principal curvatures of a quadric fitted to each point's 2 * neighbors nearest points; constraints=(ids,\n"
+  "directions (k, 3)) fixes the directions of those points (hard constraints, as on a mesh). Returns a\n"
   "PointSetField: directions (N, 3; zero for a point in no triangle), normals, magnitudes (N,; 1 at the\n"
   "largest), triangles (T, 3) with holders (T,: how many of their points' triangulations hold them) and\n"
   "on_surface (T,: the triangles the singularities are read on), singular_triangles (k, 2: triangle, k; the\n"

@@ -741,11 +741,37 @@ for v, w in zip(dirs, guide):
         near += max(c, math.sqrt(max(0., 1 - c * c))) > math.cos(math.radians(5))
 assert near >= 0.95 * counted, (near, counted)
 EOF
+# --align on a point set: the maximum curvature of a torus (R = 2, r = 1) runs along its meridians
+python3 -c "
+import math, random
+random.seed(5)
+for i in range(3000):
+    u, v = random.uniform(0, 2 * math.pi), random.uniform(0, 2 * math.pi)
+    n = (math.cos(u) * math.cos(v), math.sin(u) * math.cos(v), math.sin(v))
+    print(2 * math.cos(u) + n[0], 2 * math.sin(u) + n[1], n[2])" > "$out/torus.xyz"
+"$bin" "$out/torus.xyz" --degree 2 --align max-curvature --alignment-weight 0.99 --json \
+  --directions "$out/torus_dir.txt" > "$out/torus.json"
+check "point set with --align max-curvature: the torus's meridians" \
+      python_checks "$out/torus.json" "$out/torus.xyz" "$out/torus_dir.txt" <<'EOF'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+assert abs(d["alignment_weight"] - 0.99) < 1e-3 and d["normals"] == "estimated", d
+near = 0
+for p, l in zip(open(sys.argv[2]), open(sys.argv[3])):
+    x, y, z = map(float, p.split())
+    v = list(map(float, l.split()))
+    rho = math.hypot(x, y)
+    n = ((x / rho) * (rho - 2), (y / rho) * (rho - 2), z)  # from the tube's centre circle: the unit normal
+    meridian = (-n[2] * x / rho, -n[2] * y / rho, rho - 2)  # n x (the parallel's direction), up to sign
+    c = abs(sum(a * b for a, b in zip(v, meridian))) / math.sqrt(sum(a * a for a in meridian))
+    near += c > math.cos(math.radians(3))
+assert near >= 0.99 * 3000, near
+EOF
 "$bin" "$out/sphere_n.xyz" --guidance "$out/two.xyz" --directions "$out/refused_dir.txt" > /dev/null 2> "$out/refused.err"
 status=$?
 check "point set with a guidance file of the wrong length: exit 1, one line ($(cat "$out/refused.err"))" \
       test $status -eq 1 -a "$(wc -l < "$out/refused.err")" -eq 1 -a ! -e "$out/refused_dir.txt"
-for refused in "--on faces" "--feature-angle 30" "--align curvature" "--rosy $out/p.rosy" "--vtk $out/p.vtu" \
+for refused in "--on faces" "--feature-angle 30" "--align curvature --degree 3" "--rosy $out/p.rosy" "--vtk $out/p.vtu" \
                "--neighbors 2" "--streamlines $out/p.txt"; do
   # shellcheck disable=SC2086
   "$bin" "$out/sphere.xyz" $refused --directions "$out/refused_dir.txt" > /dev/null 2> "$out/refused.err"

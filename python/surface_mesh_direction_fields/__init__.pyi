@@ -138,7 +138,9 @@ class PointSetField:
 def compute_point_set_directions(
     P: npt.ArrayLike, /, *, normals: Optional[npt.ArrayLike] = None, degree: int = 4, s: float = 0.0,
     neighbors: int = 12, tolerance: float = 1e-10, guidance: Optional[npt.ArrayLike] = None,
-    lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None) -> PointSetField: ...
+    align: Optional[str] = None, lambda_t: Optional[float] = None, alignment_weight: Optional[float] = None,
+    eigenvalue_bound: bool = False,
+    constraints: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = None) -> PointSetField: ...
 
 class MeshArrays(Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]):
     repairs: Dict[str, int]

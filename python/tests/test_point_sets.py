@@ -115,6 +115,42 @@ def test_refusals():
         smdf.compute_point_set_directions(P[:, :2])
 
 
+def test_curvature_alignment_on_a_torus():
+    """align= follows the principal curvatures fitted on the points: the maximum curvature of a torus
+    (R = 2, r = 1) runs along its meridians, with normals given or estimated; odd degrees are refused."""
+    rng = np.random.default_rng(5)
+    u, v = rng.uniform(0, 2 * math.pi, (2, 3000))
+    N = np.column_stack([np.cos(u) * np.cos(v), np.sin(u) * np.cos(v), np.sin(v)])
+    P = np.column_stack([2 * np.cos(u), 2 * np.sin(u), np.zeros(3000)]) + N
+    meridian = np.cross(N, np.column_stack([-np.sin(u), np.cos(u), np.zeros(3000)]))
+    for normals in (N, None):
+        f = smdf.compute_point_set_directions(P, normals=normals, degree=2, align="max-curvature",
+                                              alignment_weight=0.99, eigenvalue_bound=True)
+        assert abs(f.alignment_weights[0] - 0.99) < 1e-3 and f.eigenvalues[0] > 0
+        assert (np.abs((f.directions * meridian).sum(axis=1)) > math.cos(math.radians(3))).mean() >= 0.99
+    with pytest.raises(ValueError, match="even degree"):
+        smdf.compute_point_set_directions(P, degree=3, align="curvature")
+    with pytest.raises(ValueError, match="align"):
+        smdf.compute_point_set_directions(P, align="sideways")
+
+
+def test_constraints_on_points():
+    """constraints=(ids, directions) fixes those points' directions exactly (hard constraints, as on a mesh)."""
+    P = fibonacci_sphere(1500)
+    ids = np.array([7, 307, 907])
+    wanted = np.cross(P[ids], [0.3, -0.5, 0.8])
+    f = smdf.compute_point_set_directions(P, normals=P, constraints=(ids, wanted))
+    t = wanted / np.linalg.norm(wanted, axis=1)[:, None]
+    turn = np.arctan2((np.cross(f.directions[ids], t) * P[ids]).sum(axis=1), (f.directions[ids] * t).sum(axis=1))
+    assert np.abs(np.angle(np.exp(4j * turn))).max() < 1e-10
+    with pytest.raises(ValueError, match="not a point"):
+        smdf.compute_point_set_directions(P, constraints=([1500], [[1, 0, 0]]))
+    with pytest.raises(ValueError, match="listed twice"):
+        smdf.compute_point_set_directions(P, constraints=([3, 3], [[1, 0, 0], [0, 1, 0]]))
+    with pytest.raises(ValueError, match="zero or along"):
+        smdf.compute_point_set_directions(P, normals=P, constraints=([0], [P[0]]))
+
+
 def test_guidance_along_the_parallels():
     """A guidance per point gives the aligned field, as on a mesh: on a sphere guided along its parallels
     with weight 0.9 the crosses follow them away from the poles, and the weight is reached."""

@@ -291,6 +291,135 @@ void test_guidance()
   refused([&] { SMDF::compute_globally_optimal_point_set_directions(sphere, field, np); }, "a NaN guidance vector");
 }
 
+// Points of an open cylinder (radius 1, |z| <= 2) on a jittered grid, with outward normals.
+Point_set cylinder(int around, int along, unsigned seed)
+{
+  Point_set points(true);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> shift(-0.3, 0.3);
+  for(int a = 0; a < around; ++a)
+    for(int b = 0; b <= along; ++b)
+    {
+      const double u = 2. * CGAL_PI * (a + shift(rng)) / around, z = -2. + 4. * (b + (b % along ? shift(rng) : 0.)) / along;
+      points.insert(Point_3(std::cos(u), std::sin(u), z), Vector_3(std::cos(u), std::sin(u), 0.));
+    }
+  return points;
+}
+
+// Curvature alignment on points: the principal directions of a cylinder
+// (maximum around it, minimum along it) and of a torus.
+void test_curvature_alignment()
+{
+  Point_set points = cylinder(60, 40, 3);
+  auto field = points.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+  for(auto which : {SMDF::Principal_curvature_alignment::MAXIMUM, SMDF::Principal_curvature_alignment::MINIMUM})
+  {
+    const bool maximum = which == SMDF::Principal_curvature_alignment::MAXIMUM;
+    const auto r = SMDF::compute_globally_optimal_point_set_directions(
+      points, field, points.parameters().degree(2).principal_curvature_alignment(which).alignment_weight(0.9));
+    std::size_t near = 0, counted = 0;
+    for(auto i : points)
+    {
+      if(std::abs(points.point(i).z()) > 1.5) continue;  // away from the rims
+      ++counted;
+      const Vector_3 around(-points.point(i).y(), points.point(i).x(), 0.);
+      near += angle_to(field[i], maximum ? around : Vector_3(0, 0, 1), points.normal(i), 2) < 2. * CGAL_PI / 180.;
+    }
+    report.check(near == counted && std::abs(r.components[0].alignment_weight - 0.9) < 1e-3,
+                 std::string("a cylinder's ") + (maximum ? "maximum" : "minimum") + "-curvature line field: " +
+                   std::to_string(near) + " of " + std::to_string(counted) + " points within 2 degrees");
+  }
+  try
+  {
+    SMDF::compute_globally_optimal_point_set_directions(
+      points, field, points.parameters().degree(3).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM));
+    report.check(false, "curvature alignment of an odd degree is refused");
+  }
+  catch(const SMDF::Invalid_input_error& e)
+  {
+    report.check(true, std::string("curvature alignment of an odd degree: ") + e.what());
+  }
+
+  // a torus sampled at random: the maximum curvature runs along the meridians (1 / r against cos v / (R + r cos v)),
+  // with the given normals and with normals estimated by jet fitting (oriented outward by the spanning tree)
+  const Point_set torus = random_torus(3000, 2., 1., 5);
+  for(bool with_normals : {true, false})
+  {
+    Point_set copy(with_normals);
+    for(auto i : torus) with_normals ? copy.insert(torus.point(i), torus.normal(i)) : copy.insert(torus.point(i));
+    auto along = copy.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+    SMDF::compute_globally_optimal_point_set_directions(
+      copy, along, copy.parameters().degree(2).principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM).alignment_weight(0.99));
+    std::size_t near = 0;
+    auto t = torus.begin();
+    for(auto i : copy)
+    {
+      const Vector_3 n = torus.normal(*t), parallel(-torus.point(*t).y(), torus.point(*t).x(), 0.);
+      ++t;
+      near += angle_to(along[i], CGAL::cross_product(n, parallel), n, 2) < 3. * CGAL_PI / 180.;
+    }
+    report.check(near >= 0.99 * copy.size(), std::string("a random torus (normals ") +
+                                                (with_normals ? "given" : "estimated") + "): " + std::to_string(near) +
+                                                " of 3000 maximum-curvature directions within 3 degrees of the meridians");
+  }
+}
+
+// Hard constraints on points: the field takes the given directions exactly,
+// and on a flat patch one constrained point fixes the parallel field.
+void test_constraints()
+{
+  Point_set plane(true);
+  for(int i = 0; i < 25; ++i)
+    for(int j = 0; j < 25; ++j)
+      plane.insert(Point_3(i + 0.3 * std::sin(5. * j), j + 0.2 * std::cos(3. * i), 0.), Vector_3(0, 0, 1));
+  auto fixed = plane.add_property_map<bool>("fixed", false).first;
+  auto wanted = plane.add_property_map<Vector_3>("wanted", Vector_3(0, 0, 0)).first;
+  auto directions = plane.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+  const auto first = *plane.begin();
+  fixed[first] = true;
+  wanted[first] = Vector_3(1e250 * std::cos(0.4), 1e250 * std::sin(0.4), 3e249);  // its tangent part's direction counts
+  const auto np = plane.parameters().degree(4).point_is_constrained_map(fixed).point_constrained_direction_map(wanted);
+  const auto r = SMDF::compute_globally_optimal_point_set_directions(plane, directions, np);
+  double worst = 0.;
+  for(auto i : plane) worst = (std::max)(worst, angle_to(directions[i], wanted[first], Vector_3(0, 0, 1), 4));
+  report.check(worst < 1e-8 && r.components[0].solve == SMDF::Field_solve::LINEAR_SOLVE,
+               "a plane with one constrained point: the parallel field through it (" + std::to_string(worst) + ")");
+
+  Point_set sphere = fibonacci_sphere(1500);
+  auto on = sphere.add_property_map<bool>("fixed", false).first;
+  auto to = sphere.add_property_map<Vector_3>("wanted", Vector_3(0, 0, 0)).first;
+  auto field = sphere.add_property_map<Vector_3>("direction", Vector_3(0, 0, 0)).first;
+  std::vector<Point_set::Index> chosen;
+  for(auto i : sphere)
+    if(std::size_t(i) % 300 == 7)
+    {
+      chosen.push_back(i);
+      on[i] = true;
+      to[i] = CGAL::cross_product(sphere.normal(i), Vector_3(0.3, -0.5, 0.8)) + Vector_3(0.1 * std::size_t(i) / 300., 0, 0);
+    }
+  const auto guided = sphere.parameters().degree(4).point_is_constrained_map(on).point_constrained_direction_map(to);
+  SMDF::compute_globally_optimal_point_set_directions(
+    sphere, field, guided.principal_curvature_alignment(SMDF::Principal_curvature_alignment::MAXIMUM));
+  double off = 0.;
+  for(auto i : chosen) off = (std::max)(off, angle_to(field[i], to[i], sphere.normal(i), 4));
+  report.check(off < 1e-12, "a sphere with five constrained points: their directions exactly (" + std::to_string(off) + ")");
+
+  for(const Vector_3& bad : {Vector_3(0, 0, 0), Vector_3(std::nan(""), 0, 0)})
+  {
+    to[chosen[0]] = bad;
+    try
+    {
+      SMDF::compute_globally_optimal_point_set_directions(sphere, field, guided);
+      report.check(false, "a zero or NaN constrained direction is refused");
+    }
+    catch(const SMDF::Invalid_input_error& e)
+    {
+      report.check(std::string(e.what()).find("constrained direction of point") != std::string::npos,
+                   std::string("a bad constrained direction: ") + e.what());
+    }
+  }
+}
+
 // Normals estimated by jet fitting give nearly the field of the exact normals.
 void test_estimated_normals()
 {
@@ -361,6 +490,8 @@ int main()
   test_invariance();
   test_estimated_normals();
   test_guidance();
+  test_curvature_alignment();
+  test_constraints();
   test_hostile_points();
   return report.finish();
 }

@@ -12,7 +12,8 @@ a smoothest field is defined up to it) and both compute times.
 With --samples N (and --noise S, a fraction of the mean edge length along the
 normal), the points are N random samples of the surface (area-weighted)
 instead of its vertices, each compared with the mesh field at its nearest
-vertex.
+vertex. --field="OPTIONS" passes options to both runs (the aligned fields:
+--field="--align curvature --alignment-weight 0.5").
 """
 import argparse
 import json
@@ -79,12 +80,12 @@ def nearest_vertex(V, P):
     return cKDTree(V).query(P)[1]
 
 
-def compare(program, mesh, degree, given_normals, neighbors, work, samples=0, noise=0.):
+def compare(program, mesh, degree, given_normals, neighbors, work, samples=0, noise=0., field=()):
     V, F = read_off(mesh)
     name = os.path.splitext(os.path.basename(mesh))[0]
     mesh_dirs = os.path.join(work, name + "_mesh.txt")
     mesh_mags = os.path.join(work, name + "_mesh.ply")
-    m = run(program, [mesh, "--degree", str(degree), "--directions", mesh_dirs, "--ply", mesh_mags])
+    m = run(program, [mesh, "--degree", str(degree), "--directions", mesh_dirs, "--ply", mesh_mags] + list(field))
     normals = vertex_normals(V, F)
     xyz = os.path.join(work, name + ".xyz")
     rows = np.hstack([V, normals]) if given_normals else V
@@ -96,7 +97,7 @@ def compare(program, mesh, degree, given_normals, neighbors, work, samples=0, no
     cloud_dirs = os.path.join(work, name + "_cloud.txt")
     cloud_ply = os.path.join(work, name + "_cloud.ply")
     c = run(program, [xyz, "--degree", str(degree), "--neighbors", str(neighbors), "--directions", cloud_dirs,
-                      "--ply", cloud_ply])
+                      "--ply", cloud_ply] + list(field))
     a, b = np.loadtxt(mesh_dirs)[at], np.loadtxt(cloud_dirs)
     with open(cloud_ply) as f:
         lines = f.read().split("end_header\n")[1].split("\n")
@@ -107,7 +108,8 @@ def compare(program, mesh, degree, given_normals, neighbors, work, samples=0, no
     what = f"{samples} samples, noise {noise}" if samples else f"{len(V)} points"
     print(f"{name}: {what}, {neighbors} neighbours; singular {c['singular_triangles']} (sum {c['index_sum']}, surface "
           f"{'closed, chi ' + str(c['surface_euler_characteristic']) if c['surface_is_closed'] else 'open'}) against the mesh's "
-          f"{m['singular_faces']} (sum {m['index_sum']}); eigenvalue {c['eigenvalue']:.6g} against {m['eigenvalue_bound']:.6g}; "
+          f"{m['singular_faces']} (sum {m['index_sum']}); eigenvalue {c['eigenvalue'] or 0:.6g} against "
+          f"{m['eigenvalue_bound'] or 0:.6g}; "
           f"{100 * share:.1f}% within 5 degrees ({np.count_nonzero(counted)} points counted); "
           f"compute {c['timings_ms']['total']:.0f} ms against {m['timings_ms']['total']:.0f} ms", flush=True)
 
@@ -133,11 +135,13 @@ def main():
     parser.add_argument("--neighbors", type=int, default=12)
     parser.add_argument("--samples", type=int, default=0)
     parser.add_argument("--noise", type=float, default=0.)
+    parser.add_argument("--field", default="", help="options for both runs, e.g. '--align curvature'")
     parser.add_argument("meshes", nargs="+")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
         for mesh in args.meshes:
-            compare(args.program, mesh, args.degree, args.given_normals, args.neighbors, work, args.samples, args.noise)
+            compare(args.program, mesh, args.degree, args.given_normals, args.neighbors, work, args.samples, args.noise,
+                    args.field.split())
     return 0
 
 

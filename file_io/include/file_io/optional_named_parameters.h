@@ -1,6 +1,7 @@
 // The optional named parameters that the program and the Python module pass
 // only where their user gave the option (guidance, lambda_t or
-// alignment_weight, constraints, feature edges, prescribed singularities).
+// alignment_weight, constraints, feature edges, prescribed singularities; for
+// point sets the guidance and its lambda_t or alignment_weight).
 // Named parameters are types, so each option present or absent is a branch
 // taken at run time: each step below adds its parameter when it is given and
 // hands the parameters on to the next step; the last calls `compute(np)` (the
@@ -69,12 +70,29 @@ auto with_alignment(const Options& o, const NP& np, const Compute& compute)
   return with_constraints(o, np, compute);
 }
 
-// compute(np + the named parameters of the options given in `o`)
+// compute(np + the named parameters of the options given in `o`), for meshes
 template <typename Options, typename NP, typename Compute>
 auto compute_with(const Options& o, const NP& np, const Compute& compute)
 {
   if(o.guidance) return with_alignment(o, np.vertex_guidance_map(*o.guidance), compute);
   return with_alignment(o, np, compute);
+}
+
+template <typename Options, typename NP, typename Compute>
+auto with_point_alignment(const Options& o, const NP& np, const Compute& compute)
+{
+  if(o.alignment_weight) return compute(np.alignment_weight(*o.alignment_weight));
+  if(o.alignment_lambda) return compute(np.alignment_lambda(*o.alignment_lambda));
+  return compute(np);
+}
+
+// The same for point sets: point_guidance_map, and alignment_weight or
+// alignment_lambda (which also apply to the curvature alignment).
+template <typename Options, typename NP, typename Compute>
+auto compute_with_point_guidance(const Options& o, const NP& np, const Compute& compute)
+{
+  if(o.guidance) return with_point_alignment(o, np.point_guidance_map(*o.guidance), compute);
+  return with_point_alignment(o, np, compute);
 }
 
 }  // namespace optional_named_parameters

@@ -91,6 +91,28 @@ std::vector<Vec3> point_guidance(const PointRange& points, GuidanceMap guidance_
   });
 }
 
+// The hard constraints: which points are constrained, and the direction of
+// each constrained one (finite; the map is read at those points only).
+template <typename PointRange, typename ConstrainedMap, typename DirectionMap>
+void point_constraints(const PointRange& points, ConstrainedMap is_constrained, DirectionMap direction_map,
+                       Point_set_field_request& request)
+{
+  for(const auto& p : points)
+  {
+    const bool constrained = get(is_constrained, p);
+    request.is_constrained.push_back(constrained ? 1 : 0);
+    request.constrained_directions.push_back({0., 0., 0.});
+    if(!constrained) continue;
+    const auto& d = get(direction_map, p);
+    Vec3& direction = request.constrained_directions.back();
+    direction = {to_double(d.x()), to_double(d.y()), to_double(d.z())};
+    for(double x : direction)
+      if(!std::isfinite(x))
+        throw Invalid_input_error("the constrained direction of point " +
+                                  std::to_string(request.is_constrained.size() - 1) + " is not finite");
+  }
+}
+
 template <typename PointRange, typename NormalMap>
 std::vector<Vec3> given_normals(const PointRange& points, NormalMap normal_map)
 {
@@ -116,8 +138,8 @@ The points need no mesh: each point's nearest neighbours are projected onto
 its tangent plane and triangulated there, and the field is the smoothest one
 for the energy and mass of the mesh method summed over these local
 triangulations (see the \ref SMDF_point_sets "user manual"), or with
-`point_guidance_map` the field that trades smoothness for alignment with the
-guidance, as on a mesh. Each connected component (points joined by triangles)
+`point_guidance_map` or `principal_curvature_alignment` the field that trades
+smoothness for alignment with the guidance, as on a mesh. Each connected component (points joined by triangles)
 is solved on its own; a point in no triangle receives the zero vector.
 
 \tparam PointRange a model of `ConstRange` whose iterator type is `InputIterator`
@@ -138,7 +160,8 @@ is solved on its own; a point in no triangle receives the zero vector.
   \cgalParamNBegin{normal_map}
     \cgalParamDescription{a normal per point (any length but zero); a map that converts to `false`, as
                            `Point_set_3::parameters()` names for a point set without normals, counts as none}
-    \cgalParamDefault{estimated: `CGAL::jet_estimate_normals()` over `number_of_neighbors` neighbours, oriented
+    \cgalParamDefault{estimated: the normal of a quadric fitted to the point and its `number_of_neighbors` nearest
+                      points over their least-squares plane (the jet fit of `CGAL::jet_estimate_normals()`), oriented
                       by `CGAL::mst_orient_normals()`}
   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
@@ -158,13 +181,37 @@ is solved on its own; a point in no triangle receives the zero vector.
                            from, 3 or more; about 24 for noisy scans, where 12 lets the noise into the tangent planes}
     \cgalParamDefault{`default_number_of_neighbors` (12)}
   \cgalParamNEnd
+  \cgalParamNBegin{principal_curvature_alignment}
+    \cgalParamDescription{guidance by the principal curvatures (an even `n`), as on a mesh: a quadric is fitted to
+                          each point and its `2 * number_of_neighbors` nearest points over its tangent plane (the
+                          mesh's quadric fit, on neighbours instead of a two-ring); which curvature is the larger
+                          depends on the normals' side (outward: a convex bend is positive)}
+    \cgalParamType{`Principal_curvature_alignment`}
+    \cgalParamDefault{`Principal_curvature_alignment::NONE`}
+  \cgalParamNEnd
   \cgalParamNBegin{point_guidance_map}
     \cgalParamDescription{a guidance vector per point, projected to the point's tangent plane; its length is its
-                          weight and the zero vector means no preference (as `vertex_guidance_map` on a mesh). The
+                          weight and the zero vector means no preference (as `vertex_guidance_map` on a mesh; with
+                          curvature alignment, a nonzero vector replaces the curvature guidance at its point). The
                           field then solves \f$ (A - \lambda_t M) u = M q \f$ per component, as on a mesh}
     \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Vector_3` as
                    value type}
     \cgalParamDefault{no guidance: the smoothest field}
+  \cgalParamNEnd
+  \cgalParamNBegin{point_is_constrained_map}
+    \cgalParamDescription{the points whose direction is fixed (hard constraints, as `vertex_is_constrained_map` on
+                          a mesh): with `point_constrained_direction_map`, a direction per constrained point,
+                          projected to its tangent plane, which the field takes exactly; the field is then the one
+                          that follows the constraints (a linear solve), guided or not}
+    \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `bool` as value type}
+    \cgalParamDefault{no constraint}
+  \cgalParamNEnd
+  \cgalParamNBegin{point_constrained_direction_map}
+    \cgalParamDescription{with `point_is_constrained_map`: the direction of each constrained point (neither zero
+                          nor along its normal)}
+    \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Vector_3` as
+                   value type}
+    \cgalParamDefault{unused}
   \cgalParamNEnd
   \cgalParamNBegin{alignment_lambda}
     \cgalParamDescription{with a guidance, \f$ \lambda_t \f$, below each component's smallest eigenvalue, as on a mesh}
@@ -190,7 +237,8 @@ is solved on its own; a point in no triangle receives the zero vector.
          (the smallest eigenvalue, the iterations and the residual; with a guidance \f$ \lambda_t \f$ and the
          alignment weight reached)
 
-\throws Invalid_input_error with fewer than 3 points, a coordinate, normal or guidance vector that is not finite,
+\throws Invalid_input_error with fewer than 3 points, a coordinate, normal, guidance vector or constrained
+        direction that is not finite, a constrained direction that is zero or along its point's normal,
         an option out of range, or no triangle at all (all points on a line, or all at one position)
 */
 #ifndef DOXYGEN_RUNNING
@@ -219,7 +267,19 @@ Point_set_direction_field_result compute_globally_optimal_point_set_directions(
   request.residual_tolerance = choose_parameter(get_parameter(np, internal_np::residual_tolerance), 1e-10);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::point_guidance_map_t>::value)
     request.guidance = internal::point_guidance(points, get_parameter(np, internal_np::point_guidance_map));
-  request.alignment = internal::alignment_request(np, !request.guidance.empty());
+  request.curvature = choose_parameter(get_parameter(np, internal_np::principal_curvature_alignment),
+                                       Principal_curvature_alignment::NONE);
+  if(request.curvature != Principal_curvature_alignment::NONE && degree % 2 != 0)
+    throw Invalid_input_error("curvature alignment needs an even degree n (got " + std::to_string(degree) + ")");
+  request.alignment = internal::alignment_request(
+    np, !request.guidance.empty() || request.curvature != Principal_curvature_alignment::NONE);
+  constexpr bool constrained = !parameters::is_default_parameter<NamedParameters, internal_np::point_is_constrained_t>::value;
+  static_assert(constrained == !parameters::is_default_parameter<NamedParameters,
+                                                                 internal_np::point_constrained_direction_map_t>::value,
+                "point_is_constrained_map and point_constrained_direction_map go together");
+  if constexpr(constrained)
+    internal::point_constraints(points, get_parameter(np, internal_np::point_is_constrained),
+                                get_parameter(np, internal_np::point_constrained_direction_map), request);
 
   internal::Indexed_mesh cloud;
   cloud.points = internal::point_positions(points, NP_helper::get_const_point_map(points, np));

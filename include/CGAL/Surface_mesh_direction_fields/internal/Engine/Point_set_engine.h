@@ -40,6 +40,9 @@ struct Point_set_field_request
   unsigned int number_of_neighbors = 12;
   double residual_tolerance = 1e-10;
   std::vector<Vec3> guidance;  // a vector per point, or empty: none
+  Principal_curvature_alignment curvature = Principal_curvature_alignment::NONE;  // guidance too (even degree)
+  std::vector<unsigned char> is_constrained;  // per point, or empty: no hard constraint
+  std::vector<Vec3> constrained_directions;   // where constrained: a direction the field takes exactly
   Alignment_request alignment;
   double length_scale = 1.;    // of normalize_coordinates(): eigenvalues and lambda_t in the user's units
 };

@@ -20,9 +20,9 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh/local_triangulations.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/point_set_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/point_set_fits.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/jet_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
 #include <CGAL/property_map.h>
 
@@ -42,20 +42,21 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-// Unit normals by CGAL's jet fitting over k neighbours, oriented by its
-// minimum spanning tree; a normal that the tree leaves unoriented is kept as
-// fitted.
-inline std::vector<Vec3> estimated_normals(const std::vector<Vec3>& positions, unsigned int k)
+// Unit normals fitted over k neighbours (point_set_fitted_normals()),
+// oriented by CGAL's minimum spanning tree; a normal that the tree leaves
+// unoriented is kept as fitted.
+inline std::vector<Vec3> estimated_normals(const std::vector<Vec3>& positions, const Neighbour_search& search,
+                                           unsigned int k)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
   typedef std::tuple<Kernel::Point_3, Kernel::Vector_3, std::size_t> Sample;
+  const std::vector<Vec3> fitted = point_set_fitted_normals(positions, search, k);
   std::vector<Sample> samples;
   for(std::size_t i = 0; i < positions.size(); ++i)
-    samples.emplace_back(Kernel::Point_3(positions[i][0], positions[i][1], positions[i][2]), Kernel::Vector_3(0, 0, 0),
-                         i);
+    samples.emplace_back(Kernel::Point_3(positions[i][0], positions[i][1], positions[i][2]),
+                         Kernel::Vector_3(fitted[i][0], fitted[i][1], fitted[i][2]), i);
   const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Sample>())
                     .normal_map(CGAL::Nth_of_tuple_property_map<1, Sample>());
-  CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(samples, k, np);
   CGAL::mst_orient_normals(samples, k, np);
   std::vector<Vec3> normals(positions.size());
   for(const Sample& s : samples)
@@ -120,22 +121,25 @@ std::vector<Vec3> Point_set_engine<SparseSolver>::compute(const std::vector<Vec3
                                                           std::chrono::steady_clock::time_point start,
                                                           Point_set_direction_field_result& result)
 {
+  const Neighbour_search search(positions);
   if(normals.empty())
   {
-    normals = estimated_normals(positions, request.number_of_neighbors);
+    normals = estimated_normals(positions, search, request.number_of_neighbors);
     result.normals_estimated = true;
     result.normals_ms = milliseconds_since(start);
   }
-  const Local_triangles local = local_triangulations(positions, normals, request.number_of_neighbors);
+  const Local_triangles local = local_triangulations(positions, normals, search, request.number_of_neighbors);
   const Point_set_domain domain = make_point_set_domain(positions, normals, local, request.degree);
   if(domain.triangles.number_of_faces() == 0)
     throw Invalid_input_error("the points span no triangle (all on a line or at one position)");
+  std::vector<Vec3> curvature;  // fitted to twice the neighbours of a triangulation: a two-ring's worth
+  if(request.curvature != Principal_curvature_alignment::NONE)
+    curvature = point_set_curvature_vectors(positions, normals, search, 2 * std::size_t(request.number_of_neighbors));
 
   Eigen_solve_options options;
   options.residual_tolerance = request.residual_tolerance;
   const double before_solve = milliseconds_since(start);
-  const Point_set_solution solution = solve_point_set_field<SparseSolver>(
-    domain, request.degree, request.s, request.guidance, request.alignment, options, request.length_scale);
+  const Point_set_solution solution = solve_point_set_field<SparseSolver>(domain, request, curvature, options);
   report_point_set(domain, solution, request.length_scale, result);
   result.timings.factorization_ms = solution.timings.factorization_ms;
   result.timings.setup_ms = before_solve + solution.timings.setup_ms;

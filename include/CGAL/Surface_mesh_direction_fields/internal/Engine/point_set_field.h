@@ -16,11 +16,13 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Direction_field_result.h>
 #include <CGAL/Surface_mesh_direction_fields/exceptions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Engine/Point_set_engine.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/component_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/progress_report.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Engine/sequential_component_systems.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/eigen_solve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Linear_algebra/linear_solves.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Method/field_inputs.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/field_request.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/point_set_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Method/singularities.h>
@@ -109,20 +111,95 @@ inline Complex point_coefficient(const Point_set_domain& d, std::size_t i, const
   return std::polar(length, degree * theta);
 }
 
+// The area each point stands for: a third of each of its triangles' areas,
+// a triangle weighing (holders / 3) as in the matrices.
+inline std::vector<double> point_areas(const Point_set_domain& d)
+{
+  std::vector<double> area(d.triangles.number_of_vertices(), 0.);
+  for(std::size_t f = 0; f < d.triangles.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c) area[d.triangles.faces[f][c]] += d.tangent.face_area[f] * d.holders[f] / 9.;
+  return area;
+}
+
+// The guidance coefficients q per point (empty: none), as on a mesh (user
+// manual, "Aligned and Constrained Fields"): the (n/2)-th power of the
+// principal-curvature line field (k_max - k_min) exp(2 i theta), turned by a
+// right angle for the minimum curvature; where the user gives a nonzero
+// vector, its coefficient instead, the curvature guidance then scaled per
+// component to a root mean square of 1/10.
+inline std::vector<Complex> point_set_guidance(const Point_set_domain& d,
+                                               const std::vector<Point_set_component>& components,
+                                               const Point_set_field_request& request,
+                                               const std::vector<Vec3>& curvature)
+{
+  const std::size_t np = d.triangles.number_of_vertices();
+  std::vector<Complex> q;
+  if(!curvature.empty())
+  {
+    q.assign(np, Complex(0., 0.));
+    const bool minimum = request.curvature == Principal_curvature_alignment::MINIMUM;
+    for(std::size_t i = 0; i < np; ++i)
+    {
+      const Complex line = point_coefficient(d, i, curvature[i], 2);
+      q[i] = std::pow(minimum ? -line : line, request.degree / 2);
+    }
+  }
+  if(request.guidance.empty()) return q;
+  if(q.empty())
+    q.assign(np, Complex(0., 0.));
+  else
+  {
+    const std::vector<double> area = point_areas(d);
+    for(const Point_set_component& comp : components) scale_to_tenth_rms(comp.points, area, q);
+  }
+  for(std::size_t i = 0; i < np; ++i)
+  {
+    const Vec3& g = request.guidance[i];  // finite; divided by its largest coordinate, so that no square overflows
+    const double largest = (std::max)({std::abs(g[0]), std::abs(g[1]), std::abs(g[2])});
+    if(largest > 0.) q[i] = largest * point_coefficient(d, i, (1. / largest) * g, request.degree);
+  }
+  return q;
+}
+
+// Component `comp`'s hard constraints: the unit coefficient of each
+// constrained point's direction (none if the request has none).
+inline Constraints point_set_constraints(const Point_set_domain& d, const Point_set_component& comp,
+                                         const Point_set_field_request& request)
+{
+  Constraints local;
+  if(request.is_constrained.empty()) return local;
+  local.is_constrained.assign(comp.points.size(), 0);
+  local.values = Complex_vector::Zero(static_cast<Eigen::Index>(comp.points.size()));
+  for(std::size_t a = 0; a < comp.points.size(); ++a)
+  {
+    const std::size_t p = comp.points[a];
+    if(!request.is_constrained[p]) continue;
+    const Vec3& w = request.constrained_directions[p];  // finite; its length does not matter
+    const double largest = (std::max)({std::abs(w[0]), std::abs(w[1]), std::abs(w[2])});
+    const Complex c = largest > 0. ? point_coefficient(d, p, (1. / largest) * w, request.degree) : Complex(0., 0.);
+    if(!(std::abs(c) > 0.))
+      throw Invalid_input_error("the constrained direction of point " + std::to_string(p) +
+                                " is zero or along its normal");
+    local.is_constrained[a] = 1;
+    local.values[static_cast<Eigen::Index>(a)] = c / std::abs(c);
+  }
+  return local;
+}
+
 // The field of each component (user manual, "Point Sets"): the smallest
-// eigenvector of its pencil, or with a guidance (one vector per point, or
-// none) the aligned solve, as on a mesh (Component_fields). The matrices are
-// freed on return.
+// eigenvector of its pencil, or with guidance coefficients `q` (per point,
+// or none) and hard constraints the aligned solve, as on a mesh
+// (Component_fields). The matrices are freed on return.
 template <typename SparseSolver>
-void solve_point_set_components(const Point_set_domain& d, int degree, double s, const std::vector<Vec3>& guidance,
-                                const Alignment_request& alignment, const Eigen_solve_options& options,
-                                double length_scale, Point_set_solution& solution)
+void solve_point_set_components(const Point_set_domain& d, const Point_set_field_request& request,
+                                const std::vector<Complex>& q, const Eigen_solve_options& options,
+                                Point_set_solution& solution)
 {
   std::vector<std::size_t> unknowns;
   for(const Point_set_component& comp : solution.components) unknowns.push_back(comp.points.size());
-  Sequential_component_systems<SparseSolver> systems(std::move(unknowns), length_scale, nullptr);
-  Alignment_request request = alignment;
-  request.lambda = systems.eigenvalue_from_user(request.lambda);
+  Sequential_component_systems<SparseSolver> systems(std::move(unknowns), request.length_scale, nullptr);
+  Alignment_request alignment = request.alignment;
+  alignment.lambda = systems.eigenvalue_from_user(alignment.lambda);
   SparseSolver linear_solver;
   Component_fields<Sequential_component_systems<SparseSolver> > fields(systems, options, linear_solver,
                                                                       solution.timings);
@@ -134,29 +211,33 @@ void solve_point_set_components(const Point_set_domain& d, int degree, double s,
     const auto size = static_cast<Eigen::Index>(comp.points.size());
     for(std::size_t a = 0; a < comp.points.size(); ++a) local_index[comp.points[a]] = a;
     Energy_and_mass em;
-    assemble_point_set(d, comp.faces, local_index, size, s, em.energy, em.mass);
+    assemble_point_set(d, comp.faces, local_index, size, request.s, em.energy, em.mass);
     systems.set_matrices(c, std::move(em));
     solution.timings.setup_ms += milliseconds_since(start);
-    Complex_vector q;
-    if(!guidance.empty()) q.resize(size);
-    for(std::size_t a = 0; a < comp.points.size() && !guidance.empty(); ++a)
-      q[static_cast<Eigen::Index>(a)] = point_coefficient(d, comp.points[a], guidance[comp.points[a]], degree);
-    const Complex_vector u = fields.field_of(c, q, Constraints(), request, comp.report);
+    Complex_vector component_q;
+    if(!q.empty()) component_q.resize(size);
+    for(std::size_t a = 0; a < comp.points.size() && !q.empty(); ++a)
+      component_q[static_cast<Eigen::Index>(a)] = q[comp.points[a]];
+    const Complex_vector u = fields.field_of(c, component_q, point_set_constraints(d, comp, request), alignment,
+                                             comp.report);
     if(u.size() != size) throw Solver_failure_error("the solve of a point set's component failed");
     for(std::size_t a = 0; a < comp.points.size(); ++a)
       solution.coefficients[comp.points[a]] = u[static_cast<Eigen::Index>(a)];
   }
 }
 
+// `curvature`: the maximum-curvature vector per point where the request asks
+// for curvature alignment (point_set_fits.h), else empty.
 template <typename SparseSolver>
-Point_set_solution solve_point_set_field(const Point_set_domain& d, int degree, double s,
-                                         const std::vector<Vec3>& guidance, const Alignment_request& alignment,
-                                         const Eigen_solve_options& options, double length_scale)
+Point_set_solution solve_point_set_field(const Point_set_domain& d, const Point_set_field_request& request,
+                                         const std::vector<Vec3>& curvature, const Eigen_solve_options& options)
 {
   Point_set_solution solution;
   solution.coefficients.assign(d.triangles.number_of_vertices(), Complex(0., 0.));
   solution.components = point_set_components(d.triangles);
-  solve_point_set_components<SparseSolver>(d, degree, s, guidance, alignment, options, length_scale, solution);
+  std::vector<Complex> q = point_set_guidance(d, solution.components, request, curvature);
+  rescale_extreme_guidance(q);
+  solve_point_set_components<SparseSolver>(d, request, q, options, solution);
   solution.face_index = face_indices(d.triangles, d.connection, solution.coefficients);
   return solution;
 }

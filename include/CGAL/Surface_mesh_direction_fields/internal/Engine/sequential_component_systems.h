@@ -55,17 +55,12 @@ public:
   {}
 
   // Component c's A and M, taken from `em` (left empty), and the previous
-  // component's freed: swapped, since Eigen's sparse matrices have no move
-  // (std::move would copy them) and an assignment keeps their arrays.
+  // component's freed (swapped with empty ones: an assignment would keep
+  // their arrays).
   void set_matrices(std::size_t c, Energy_and_mass&& em)
   {
-    if(m_filled)
-    {
-      Complex_sparse_matrix().swap(m_matrices[*m_filled].energy);
-      Complex_sparse_matrix().swap(m_matrices[*m_filled].mass);
-    }
-    m_matrices[c].energy.swap(em.energy);
-    m_matrices[c].mass.swap(em.mass);
+    if(m_filled) m_matrices[*m_filled] = Energy_and_mass();
+    m_matrices[c] = std::move(em);
     m_filled = c;
   }
 

@@ -193,12 +193,11 @@ inline void local_triangulation(const std::vector<Vec3>& points, const Vec3& n, 
 // The local triangulations of all points (normals of unit length), merged:
 // each triangle once, with the number of points whose triangulation holds it.
 inline Local_triangles local_triangulations(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                            std::size_t k)
+                                            const Neighbour_search& search, std::size_t k)
 {
   Local_triangles result;
   const std::size_t np = points.size();
   result.nearest.assign(np, no_point);
-  const Neighbour_search search(points);
   std::vector<std::vector<std::array<std::size_t, 3> > > per_point(np);
   parallel_for_each_range(np, [&](std::size_t begin, std::size_t end) {
     std::vector<std::size_t> neighbours;

@@ -35,6 +35,7 @@
 #include <new>
 #include <type_traits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 // The global energy and mass matrices A and M of each component, gathered
@@ -49,6 +50,20 @@ struct Energy_and_mass
 {
   Complex_sparse_matrix energy;  // A, Hermitian positive semi-definite
   Complex_sparse_matrix mass;    // M, Hermitian positive definite
+
+  // Eigen 3.4's sparse matrices have no move constructor or assignment: a
+  // returned pair stored in place (matrices[c] = assemble_component(...))
+  // would copy both arrays, and touch a second A and M. Moves swap them.
+  Energy_and_mass() = default;
+  Energy_and_mass(const Energy_and_mass&) = default;
+  Energy_and_mass& operator=(const Energy_and_mass&) = default;
+  Energy_and_mass(Energy_and_mass&& other) noexcept { *this = std::move(other); }
+  Energy_and_mass& operator=(Energy_and_mass&& other) noexcept
+  {
+    energy.swap(other.energy);
+    mass.swap(other.mass);
+    return *this;
+  }
 };
 
 // The local matrices of all faces, in storage that is constructed in place
@@ -265,6 +280,18 @@ struct Shifted_lower_triangle
   Complex_sparse_matrix matrix;
   double shift = 0.;
   double eigenvalue_scale = 0.;  // trace(A) / trace(M)
+
+  Shifted_lower_triangle() = default;
+  Shifted_lower_triangle(const Shifted_lower_triangle&) = default;
+  Shifted_lower_triangle& operator=(const Shifted_lower_triangle&) = default;
+  Shifted_lower_triangle(Shifted_lower_triangle&& other) noexcept { *this = std::move(other); }
+  Shifted_lower_triangle& operator=(Shifted_lower_triangle&& other) noexcept  // a swap, as Energy_and_mass's
+  {
+    matrix.swap(other.matrix);
+    shift = other.shift;
+    eigenvalue_scale = other.eigenvalue_scale;
+    return *this;
+  }
 };
 
 // The number of rows jl or below in local column jl, assuming that the fan of

@@ -103,8 +103,9 @@ inline void rescale_extreme_guidance(std::vector<std::complex<double> >& q)
 // default length (user manual, "Aligned and Constrained Fields"). This scales
 // q on the vertices or faces `elements` of one component, `area` the area
 // each stands for.
-inline void scale_to_tenth_rms(const std::vector<Compact_index>& elements, const std::vector<double>& area,
-                               std::vector<std::complex<double> >& q)
+template <typename Index>
+void scale_to_tenth_rms(const std::vector<Index>& elements, const std::vector<double>& area,
+                        std::vector<std::complex<double> >& q)
 {
   double largest = 0.;
   for(std::size_t e : elements) largest = (std::max)(largest, std::abs(q[e]));
